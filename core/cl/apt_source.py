@@ -1,0 +1,262 @@
+"""Read CL data written as APT source text (ISO 4343 style), as CAM systems write it.
+
+Rules (decisions with seed lines in docs/decisions.md):
+
+* case-insensitive words; blanks are insignificant except inside PARTNO/PPRINT/INSERT text;
+* a trailing ``$`` continues the statement on the next line;
+* ``$$`` starts a comment, kept as a :class:`Comment` record; a comment line that ends in a
+  single ``$`` continues on the next line (Creo writes multi-line ``$$->`` comments so);
+* PARTNO, PPRINT and INSERT keep the rest of the line verbatim (a leading ``/`` dropped);
+* FROM/GOTO take 3 values (6 after MULTAX/ON), GODLTA 1 or 3; CIRCLE takes the canonical
+  7 values xc, yc, zc, i, j, k, r; INTOL, OUTTOL and CUTTER become type-6000 records and
+  MULTAX a type-9000 record, as an APT processor writes them.
+
+The reader is a generator: memory does not grow with the file.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Iterable, Iterator
+
+from gecent.core.cl.records import (
+    Arelem,
+    Arg,
+    Circle,
+    Comment,
+    Fini,
+    Motion,
+    MotionSubtype,
+    Multiax,
+    Record,
+    Statement,
+    Word,
+)
+from gecent.core.cl.vocabulary import vocabulary
+from gecent.core.errors import InputError, SourcePosition
+
+TEXT_MAJORS = frozenset({"PARTNO", "PPRINT", "INSERT"})
+_MOTION = {"FROM": MotionSubtype.FROM, "GOTO": MotionSubtype.GOTO, "GODLTA": MotionSubtype.GODLTA}
+_ARELEM = {"INTOL": 4, "OUTTOL": 5, "CUTTER": 6}
+_TOKEN = re.compile(
+    r"\s*(?:(?P<number>[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?)(?![A-Za-z0-9_])"
+    r"|(?P<word>[A-Za-z][A-Za-z0-9_]*)|(?P<comma>,)|(?P<end>$))"
+)
+_MAJOR = re.compile(r"\s*([A-Za-z][A-Za-z0-9_]*)")
+
+
+class _Line:
+    """One logical statement: the joined text and where each part came from."""
+
+    __slots__ = ("line", "parts", "text")
+
+    def __init__(self, line: int) -> None:
+        self.line = line
+        self.text = ""
+        self.parts: list[tuple[int, int, int]] = []  # (offset in text, line, column base)
+
+    def add(self, text: str, line: int, column: int) -> None:
+        self.parts.append((len(self.text), line, column))
+        self.text += text
+
+    def position(self, file: str, offset: int) -> SourcePosition:
+        start, line, column = self.parts[0]
+        for part in self.parts:
+            if part[0] > offset:
+                break
+            start, line, column = part
+        return SourcePosition(file, line, column + offset - start)
+
+
+def _logical_lines(lines: Iterable[str]) -> Iterator[tuple[str, _Line]]:
+    """Yield ("statement" | "comment", logical line) with continuations joined."""
+    pending: _Line | None = None
+    pending_kind = "statement"
+    for number, raw in enumerate(lines, start=1):
+        line = raw.rstrip("\r\n")
+        if pending is not None and pending_kind == "comment":
+            stripped = line.rstrip()
+            continues = stripped.endswith("$") and not stripped.endswith("$$")
+            pending.add(" " + (stripped[:-1] if continues else stripped).strip(), number, 1)
+            if not continues:
+                yield "comment", pending
+                pending = None
+            continue
+        comment_at = line.find("$$")
+        head = line if comment_at < 0 else line[:comment_at]
+        if pending is None and not head.strip():
+            if comment_at >= 0:
+                comment = _Line(number)
+                body = line[comment_at + 2 :].rstrip()
+                if body.endswith("$") and not body.endswith("$$"):
+                    comment.add(body[:-1].rstrip(), number, comment_at + 3)
+                    pending, pending_kind = comment, "comment"
+                else:
+                    comment.add(body, number, comment_at + 3)
+                    yield "comment", comment
+            continue
+        if pending is None:
+            pending, pending_kind = _Line(number), "statement"
+        stripped = head.rstrip()
+        first_word = _MAJOR.match(pending.text or stripped)
+        is_text = first_word is not None and first_word.group(1).upper() in TEXT_MAJORS
+        if not is_text and stripped.endswith("$"):
+            pending.add(stripped[:-1], number, 1)
+            continue
+        pending.add(line.rstrip() if is_text else stripped, number, 1)
+        yield "statement", pending
+        pending = None
+        if comment_at >= 0 and not is_text:
+            trailing = _Line(number)
+            trailing.add(line[comment_at + 2 :].rstrip(), number, comment_at + 3)
+            yield "comment", trailing
+    if pending is not None:
+        yield pending_kind, pending
+
+
+class AptSourceReader:
+    """Parse one APT source CL file into records."""
+
+    def __init__(self, file: str) -> None:
+        self.file = file
+        self.multiax = False
+        self.number = 0
+        self._vocabulary = vocabulary()
+
+    def read_lines(self, lines: Iterable[str]) -> Iterator[Record]:
+        for kind, logical in _logical_lines(lines):
+            if kind == "comment":
+                self.number += 1
+                yield Comment(self.file, logical.line, self.number, logical.text.strip())
+                continue
+            record = self._statement(logical)
+            if record is not None:
+                yield record
+
+    def _error(self, logical: _Line, offset: int, message: str) -> InputError:
+        return InputError(message, logical.position(self.file, offset))
+
+    def _statement(self, logical: _Line) -> Record | None:
+        text = logical.text
+        match = _MAJOR.match(text)
+        if match is None:
+            if not text.strip():
+                return None
+            offset = len(text) - len(text.lstrip())
+            raise self._error(
+                logical, offset, f"expected a statement word, found {text.strip()[:20]!r}"
+            )
+        major = match.group(1).upper()
+        rest_at = match.end()
+        self.number += 1
+        line = logical.line
+        if major in TEXT_MAJORS:
+            body = text[rest_at:].strip()
+            if body.startswith("/"):
+                body = body[1:].strip()
+            return Statement(
+                self.file, line, self.number, major, self._vocabulary.major_code(major), (), body
+            )
+        rest = text[rest_at:]
+        stripped = rest.lstrip()
+        if stripped.startswith("="):
+            raise self._error(
+                logical, rest_at, "an assignment is APT part-program geometry, not CL data"
+            )
+        args: list[Arg] = []
+        if stripped:
+            if not stripped.startswith("/"):
+                raise self._error(
+                    logical,
+                    rest_at + len(rest) - len(stripped),
+                    f"expected '/' after {major}, found {stripped[:12]!r}",
+                )
+            args = self._arguments(logical, rest_at + len(rest) - len(stripped) + 1)
+        return self._record(logical, major, args)
+
+    def _arguments(self, logical: _Line, start: int) -> list[Arg]:
+        text = logical.text
+        args: list[Arg] = []
+        position = start
+        expect_value = True
+        while True:
+            token = _TOKEN.match(text, position)
+            if token is None:
+                raise self._error(
+                    logical,
+                    position + len(text[position:]) - len(text[position:].lstrip()),
+                    f"expected a number or a word, found {text[position:].strip()[:12]!r}",
+                )
+            kind = token.lastgroup
+            assert kind is not None  # every alternative of _TOKEN is a named group
+            if kind == "end":
+                if expect_value and args:
+                    raise self._error(logical, position, "expected a value after ','")
+                return args
+            if kind == "comma":
+                if expect_value:
+                    raise self._error(logical, token.start(kind), "expected a value before ','")
+                expect_value = True
+            else:
+                if not expect_value:
+                    raise self._error(logical, token.start(kind), "expected ',' between values")
+                value = token.group(kind)
+                if kind == "number":
+                    is_float = any(c in value for c in ".eE")
+                    args.append(float(value) if is_float else int(value))
+                else:
+                    name = value.upper()
+                    args.append(Word(name, self._vocabulary.minor_code(name)))
+                expect_value = False
+            position = token.end()
+
+    def _numbers(
+        self, logical: _Line, major: str, args: list[Arg], counts: tuple[int, ...]
+    ) -> tuple[float, ...]:
+        if any(isinstance(a, Word | str) for a in args):
+            raise self._error(
+                logical, 0, f"{major} takes numbers only, found {', '.join(map(str, args))}"
+            )
+        if len(args) not in counts:
+            expected = " or ".join(str(c) for c in counts)
+            raise self._error(logical, 0, f"{major} takes {expected} values, found {len(args)}")
+        return tuple(float(a) for a in args)  # type: ignore[arg-type]
+
+    def _record(self, logical: _Line, major: str, args: list[Arg]) -> Record:
+        file, line, number = self.file, logical.line, self.number
+        if major in _MOTION:
+            subtype = _MOTION[major]
+            if subtype is MotionSubtype.GODLTA:
+                counts: tuple[int, ...] = (1, 3)
+            else:
+                counts = (6,) if self.multiax else (3, 6)
+            values = self._numbers(logical, major, args, counts)
+            return Motion(file, line, number, subtype, (values,))
+        if major == "CIRCLE":
+            return Circle(file, line, number, self._numbers(logical, major, args, (7,)))
+        if major == "FINI":
+            return Fini(file, line, number)
+        if major in _ARELEM:
+            values = self._numbers(logical, major, args, tuple(range(1, 8)))
+            return Arelem(file, line, number, _ARELEM[major], values)
+        if major == "MULTAX":
+            words = [a.name for a in args if isinstance(a, Word)]
+            if words not in (["ON"], ["OFF"], []) or len(args) != len(words):
+                raise self._error(logical, 0, "MULTAX takes ON or OFF")
+            self.multiax = words != ["OFF"]
+            return Multiax(file, line, number, self.multiax)
+        return Statement(file, line, number, major, self._vocabulary.major_code(major), tuple(args))
+
+
+def read_apt_source(path: str) -> Iterator[Record]:
+    """Stream the records of an APT source CL file."""
+    reader = AptSourceReader(path)
+    try:
+        with open(path, encoding="utf-8", errors="strict", newline="") as handle:
+            yield from reader.read_lines(handle)
+    except UnicodeDecodeError as exc:
+        raise InputError(
+            f"not a text CL file (byte {exc.start}: {exc.reason})", SourcePosition(path)
+        ) from None
+    except OSError as exc:
+        raise InputError(f"cannot read CL file: {exc.strerror}", SourcePosition(path)) from None

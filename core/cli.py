@@ -1,0 +1,213 @@
+"""The ``gecent`` command."""
+
+from __future__ import annotations
+
+import json
+import os
+import sys
+from collections.abc import Callable
+from functools import wraps
+from pathlib import Path
+from typing import Any, TypeVar
+
+import click
+from gecent.core import __version__
+from gecent.core.errors import EXIT_INTERNAL, GecentError, InputError, NotYetSupported
+from gecent.core.families import FAMILIES, MachinePack
+from gecent.core.machine.definition import MachineDefinition
+from gecent.core.machine.describe import describe_machine, machine_as_dict
+from gecent.core.output.files import write_atomically
+from gecent.core.output.tape import tape_image
+from gecent.core.plugins import PluginSet, get_plugins
+from gecent.core.run import post as run_post
+
+F = TypeVar("F", bound=Callable[..., Any])
+
+
+def _reporting_errors(function: F) -> F:
+    """Report gecent errors as one clear message and an exit status; never a traceback."""
+
+    @wraps(function)
+    def wrapper(*args: Any, **kwargs: Any) -> Any:
+        try:
+            return function(*args, **kwargs)
+        except GecentError as exc:
+            click.echo(str(exc), err=True)
+            sys.exit(exc.exit_status)
+        except click.exceptions.Exit:
+            raise
+        except Exception as exc:
+            if os.environ.get("GECENT_DEBUG"):
+                raise
+            click.echo(
+                f"gecent: internal error: {type(exc).__name__}: {exc} "
+                "(set GECENT_DEBUG=1 for the traceback)",
+                err=True,
+            )
+            sys.exit(EXIT_INTERNAL)
+
+    return wrapper  # type: ignore[return-value]
+
+
+def _plugins() -> PluginSet:
+    plugins = get_plugins()
+    for failure in plugins.failures:
+        click.echo(
+            f"gecent: warning: plugin {failure.entry_point} ({failure.distribution}) "
+            f"not loaded: {failure.error}",
+            err=True,
+        )
+    return plugins
+
+
+def _plugin_rows(plugins: PluginSet) -> list[dict[str, Any]]:
+    rows = []
+    for family in FAMILIES:
+        infos = sorted(
+            plugins.family(family.name).values(), key=lambda i: (str(type(i.key)), i.key)
+        )
+        for info in infos:
+            rows.append(
+                {
+                    "family": family.name,
+                    "id": info.key,
+                    "name": info.name,
+                    "distribution": info.distribution,
+                    "version": info.version,
+                    "module": info.module,
+                }
+            )
+    return rows
+
+
+def _print_table(rows: list[dict[str, Any]], columns: list[str]) -> None:
+    widths = {c: max([len(c)] + [len(str(r[c])) for r in rows]) for c in columns}
+    click.echo("  ".join(c.upper().ljust(widths[c]) for c in columns).rstrip())
+    for row in rows:
+        click.echo("  ".join(str(row[c]).ljust(widths[c]) for c in columns).rstrip())
+
+
+@click.group(invoke_without_command=True, context_settings={"help_option_names": ["-h", "--help"]})
+@click.option("--list-plugins", is_flag=True, help="List every installed plugin and exit.")
+@click.option("--json", "as_json", is_flag=True, help="With --list-plugins: JSON output.")
+@click.version_option(__version__, prog_name="gecent")
+@click.pass_context
+@_reporting_errors
+def main(ctx: click.Context, list_plugins: bool, as_json: bool) -> None:
+    """gecent: the GECENT III APT postprocessor, re-made as a plugin framework."""
+    if list_plugins:
+        plugins = _plugins()
+        rows = _plugin_rows(plugins)
+        if as_json:
+            failures = [vars(f) for f in plugins.failures]
+            click.echo(json.dumps({"plugins": rows, "failures": failures}, indent=2))
+        else:
+            _print_table(rows, ["family", "id", "name", "distribution", "version", "module"])
+        ctx.exit(0)
+    if ctx.invoked_subcommand is None:
+        click.echo(ctx.get_help())
+
+
+@main.command()
+@click.option("--json", "as_json", is_flag=True, help="JSON output.")
+@_reporting_errors
+def machines(as_json: bool) -> None:
+    """List the installed machines."""
+    plugins = _plugins()
+    rows = []
+    for info in plugins.family("machines").values():
+        pack: MachinePack = info.obj
+        rows.append(
+            {
+                "number": "" if pack.number is None else pack.number,
+                "name": pack.name,
+                "title": pack.title,
+                "distribution": info.distribution,
+                "origin": pack.origin,
+            }
+        )
+    rows.sort(key=lambda r: (r["number"] == "", r["number"] if r["number"] != "" else 0, r["name"]))
+    if as_json:
+        click.echo(json.dumps(rows, indent=2))
+    else:
+        _print_table(rows, ["number", "name", "title", "distribution"])
+
+
+@main.group()
+def machine() -> None:
+    """Inspect one machine."""
+
+
+def _load_machine(plugins: PluginSet, key: str) -> MachineDefinition:
+    if key.endswith(".toml") or os.sep in key:
+        return MachinePack.from_path(key).load() if Path(key).exists() else _missing(key)
+    pack = plugins.machine(key)
+    if pack is None:
+        raise InputError(f"machine {key!r} is not installed (see 'gecent machines')")
+    return pack.load()
+
+
+def _missing(key: str) -> MachineDefinition:
+    raise InputError(f"machine file {key!r} does not exist")
+
+
+@machine.command("show")
+@click.argument("key", metavar="ID")
+@click.option("--all", "show_all", is_flag=True, help="Also list options at their standard value.")
+@click.option("--json", "as_json", is_flag=True, help="JSON output.")
+@_reporting_errors
+def machine_show(key: str, show_all: bool, as_json: bool) -> None:
+    """Show a machine's resolved tables and options (ID: number, name or a .toml file)."""
+    definition = _load_machine(_plugins(), key)
+    if as_json:
+        click.echo(json.dumps(machine_as_dict(definition), indent=2))
+    else:
+        click.echo(describe_machine(definition, show_all), nl=False)
+
+
+@main.command()
+@click.argument("input_path", metavar="INPUT", type=click.Path(dir_okay=False))
+@click.option(
+    "--machine",
+    "machine_key",
+    metavar="ID",
+    help="Machine number, name or .toml file; overrides MACHIN/GECENT in the CL file.",
+)
+@click.option(
+    "-o",
+    "--output",
+    "tape_path",
+    type=click.Path(dir_okay=False),
+    help="Tape image file (default: INPUT with .tape).",
+)
+@click.option(
+    "--listing",
+    "listing_path",
+    type=click.Path(dir_okay=False),
+    help="Printed listing file (default: INPUT with .lis).",
+)
+@_reporting_errors
+def post(
+    input_path: str, machine_key: str | None, tape_path: str | None, listing_path: str | None
+) -> None:
+    """Postprocess a CL file into a tape image and a printed listing."""
+    plugins = _plugins()
+    override: str | MachineDefinition | None = machine_key
+    if machine_key is not None and (machine_key.endswith(".toml") or os.sep in machine_key):
+        override = _load_machine(plugins, machine_key)
+    result = run_post(input_path, plugins, override)
+    layout = int(result.machine.number_option(164))
+    printout = plugins.get("printouts", layout)
+    if printout is None:
+        raise NotYetSupported(f"printout GEOUT{layout} (option 164 = {layout})")
+    listing = printout.render(result.machine, result.blocks, result.partno)
+    tape = tape_image(result.blocks)
+    stem = Path(input_path)
+    write_atomically(tape_path or stem.with_suffix(".tape"), tape.encode("ascii", "replace"))
+    write_atomically(listing_path or stem.with_suffix(".lis"), listing.encode("utf-8"))
+    for diagnostic in result.diagnostics:
+        click.echo(str(diagnostic), err=True)
+
+
+if __name__ == "__main__":  # pragma: no cover
+    main()

@@ -1,0 +1,103 @@
+"""The resolved machine definition: the Standard Machine with one machine's overrides applied.
+
+Tables keep the manual's 1-based location numbers (index 0 is unused), so
+``machine.tableg[4]`` is always the CCLW circular G code, as in the manual. Everything is
+immutable tuples: a run reads it in its hot loop without pydantic or dict lookups.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass, field, replace
+
+from gecent.core.absent import ABSENT, Absent
+from gecent.core.machine.catalogue import STORE_SIZE, catalogue
+from gecent.core.machine.regformat import RegisterFormat
+
+OptionValue = float | str
+
+# REGFOR locations printed without a decimal point (NDP, 001 L24057-24062).
+NDP_LOCATIONS = frozenset({1, 2, 12, 13, 14, 17})
+
+
+@dataclass(frozen=True, slots=True)
+class RegisterSet:
+    """REGSTR letters and decoded REGFOR formats of one head (locations 1..30)."""
+
+    letters: tuple[str, ...]
+    formats: tuple[RegisterFormat | None, ...]
+    regfor: tuple[float, ...]
+
+    def present(self) -> tuple[int, ...]:
+        """Locations with a register (REGFOR != 0), in location order."""
+        return tuple(i for i in range(1, len(self.formats)) if self.formats[i] is not None)
+
+
+@dataclass(frozen=True, slots=True)
+class MachineDefinition:
+    """One machine, fully resolved. Build it with :mod:`gecent.core.machine.loader`."""
+
+    number: int | None
+    name: str
+    title: str
+    description: str
+    source: str
+    origin: str
+    tableg: tuple[int | Absent, ...]
+    tablem: tuple[int | Absent, ...]
+    heads: tuple[RegisterSet, ...]
+    options: tuple[OptionValue, ...]
+    store: tuple[float | Absent, ...]
+    speed_count: int
+    srtab_top: int
+    feed_ranges: tuple[tuple[float, float], ...]
+    output_order: tuple[int, ...] | None
+    warnings: tuple[str, ...] = field(default=())
+
+    @property
+    def registers(self) -> RegisterSet:
+        """Head 1's register set (the only one on a single-head machine)."""
+        return self.heads[0]
+
+    @property
+    def label(self) -> str:
+        return f"{self.number} ({self.name})" if self.number is not None else self.name
+
+    def option(self, key: int | str) -> OptionValue:
+        """An option's value by manual number or alias (KeyError for an unknown key)."""
+        return self.options[catalogue().option_number(key)]
+
+    def number_option(self, key: int | str) -> float:
+        value = self.option(key)
+        if isinstance(value, str):
+            raise TypeError(f"option {key} holds text {value!r}, not a number")
+        return value
+
+    @property
+    def indfr(self) -> int:
+        """INDFR = 300 - option 174: FRTAB(INDFR + i) is the i-th feed-range word."""
+        return STORE_SIZE - int(self.number_option(174))
+
+    def srtab(self, index: int) -> float | Absent:
+        """SRTAB(index), 1-based, from the shared 300-word store."""
+        return self.store[index]
+
+    def spindle_speeds(self) -> tuple[float, ...]:
+        """The speed table SRTAB(1 .. option 7 x option 8)."""
+        return tuple(float(v) for v in self.store[1 : self.speed_count + 1] if v is not ABSENT)
+
+    def spindle_ranges(self) -> tuple[tuple[float, ...], ...]:
+        per_range = int(self.number_option(8))
+        speeds = self.spindle_speeds()
+        return tuple(speeds[i : i + per_range] for i in range(0, len(speeds), per_range))
+
+    def with_options(self, changes: Mapping[int, OptionValue]) -> MachineDefinition:
+        """A copy with some options changed (no validation: see loader.revalidate)."""
+        options = list(self.options)
+        for number, value in changes.items():
+            options[number] = value
+        return replace(self, options=tuple(options))
+
+    def describe_code(self, table: str, location: int) -> str:
+        value = (self.tableg if table == "tableg" else self.tablem)[location]
+        return "absent" if value is ABSENT else f"{table[-1].upper()}{value:02d}"

@@ -1,0 +1,203 @@
+"""The Machine Subroutine checklist (manual §5.6.6.4, 001 L27081-27161) and the option
+rules whose breach the manual makes fatal (§5.7), applied to a resolved definition.
+
+Each rule returns ``(table, entry, rule text)``; the loader adds the file name.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterator
+from itertools import pairwise
+
+from gecent.core.absent import ABSENT
+from gecent.core.machine.catalogue import STORE_SIZE
+from gecent.core.machine.definition import MachineDefinition
+from gecent.core.machine.shuffle import decode_shuffle
+
+Problem = tuple[str, str | int | None, str]
+
+# Spindle types whose SRTAB holds more than the option 7 x option 8 speed table
+# (commands, factors or generation parameters after it; manual §4.5.11, .13, .15, .16,
+# .18), and type 7 whose layout belongs to the machine's own MACFUN code.
+SRTAB_EXTENDED_TYPES = frozenset({7, 11, 13, 15, 16, 18})
+
+# Allowed values of the options that select modules or encodings.
+_CHOICES: dict[int, tuple[set[float], str]] = {
+    1: ({-1.0, 0.0, 1.0, 2.0, 3.0}, "control mode must be -1, 0, 1, 2 or 3"),
+    10: ({0.0, 1.0, -1.0, -2.0, -3.0, -4.0}, "feedrate command format must be 0, +1 or -1..-4"),
+    20: ({-2.0, -1.0, 0.0, 1.0}, "punched output type must be -2, -1, 0 or 1"),
+    132: (
+        {float(n) for n in range(9)},
+        "machine type must be 0..8 (a wrong value is fatal error 8000)",
+    ),
+    164: ({1.0, 2.0, 3.0, 4.0}, "printout layout must be 1..4 (GEOUT1-GEOUT4)"),
+}
+
+
+def _whole(value: float | str) -> bool:
+    return isinstance(value, float) and value == int(value)
+
+
+def _number(machine: MachineDefinition, number: int) -> float:
+    value = machine.options[number]
+    return value if isinstance(value, float) else 0.0
+
+
+def _option_values(machine: MachineDefinition) -> Iterator[Problem]:
+    for number, (allowed, rule) in _CHOICES.items():
+        if machine.options[number] not in allowed:
+            yield "optab", number, f"{rule}; found {machine.options[number]!r}"
+    for number, low, high, what in (
+        (19, 0, 19, "spindle type"),
+        (116, 0, 9, "geometry class"),
+        (7, 1, 300, "number of spindle ranges"),
+        (8, 1, 300, "speeds per range"),
+        (18, 0, 7, "number of feedrate ranges"),
+        (174, 0, STORE_SIZE, "FRTAB size"),
+    ):
+        value = machine.options[number]
+        if not _whole(value) or not low <= float(value) <= high:
+            yield "optab", number, f"{what} must be a whole number {low}..{high}; found {value!r}"
+    if _whole(machine.options[174]) and int(_number(machine, 174)) % 2:
+        yield "optab", 174, "FRTAB size must be even (a minimum and a maximum per range)"
+    if _number(machine, 14) <= 0:
+        yield "optab", 14, "step size must be greater than 0"
+    if _number(machine, 5) < 0:
+        yield "optab", 5, "equality tolerance must not be negative"
+    axes = machine.options[22]
+    if not _whole(axes) or not set(f"{int(float(axes)):03d}") <= {"0", "1"} or axes in (0.0,):
+        yield "optab", 22, f"axes present must be a sum of 100 (X), 10 (Y), 1 (Z); found {axes!r}"
+    for number, letters in ((59, "XYZ"), (60, "IJK")):
+        try:
+            decode_shuffle(_number(machine, number), letters)
+        except ValueError as exc:
+            yield "optab", number, f"badly formed (fatal error 7, DECODE): {exc}"
+
+
+def _spindle_table(machine: MachineDefinition) -> Iterator[Problem]:
+    count = machine.speed_count
+    spindle_type = int(_number(machine, 19))
+    missing = [i for i in range(1, count + 1) if machine.store[i] is ABSENT]
+    if missing:
+        yield (
+            "spindle_table",
+            "speeds",
+            f"option 7 x option 8 = {count} speeds, but SRTAB holds only {count - len(missing)} "
+            "(checklist 11a: their product must equal the number of speeds)",
+        )
+    elif spindle_type not in SRTAB_EXTENDED_TYPES and machine.srtab_top > count:
+        yield (
+            "spindle_table",
+            "speeds",
+            f"option 7 x option 8 = {count} speeds, but SRTAB holds {machine.srtab_top} values "
+            f"(checklist 11a; spindle type {spindle_type} keeps only speeds in SRTAB)",
+        )
+    if not missing:
+        for range_number, speeds in enumerate(machine.spindle_ranges(), start=1):
+            if any(b < a for a, b in pairwise(speeds)):
+                yield (
+                    "spindle_table",
+                    "speeds",
+                    f"range {range_number} speeds must be in ascending order: {list(speeds)}",
+                )
+            if any(s < 0 for s in speeds):
+                yield "spindle_table", "speeds", f"range {range_number} has a negative speed"
+    if spindle_type == 7 and _number(machine, 133) != 1:
+        yield "optab", 133, "spindle type 7 computes S in the machine's MACFUN: set option 133 = 1"
+
+
+def _feed_table(machine: MachineDefinition) -> Iterator[Problem]:
+    ranges = machine.feed_ranges
+    size = int(_number(machine, 174))
+    per_axis = _number(machine, 25) < 0
+    if per_axis:
+        axes = f"{int(_number(machine, 22)):03d}".count("1")
+        expected, why = axes, f"option 25 < 0: one [min, max] per linear axis ({axes})"
+    else:
+        count = int(_number(machine, 18))
+        expected, why = count, f"option 18 = {count} feedrate ranges"
+    if len(ranges) != expected:
+        yield "feed_ranges", "ranges", f"{why}, but FRTAB lists {len(ranges)} (checklist 11c)"
+    if size != 2 * len(ranges):
+        yield (
+            "optab",
+            174,
+            f"FRTAB size must be 2 x {len(ranges)} ranges = {2 * len(ranges)}; found {size} "
+            "(checklist 11c)",
+        )
+    for number, (low, high) in enumerate(ranges, start=1):
+        if not 0 <= low <= high:
+            yield "feed_ranges", f"ranges.{number}", f"minimum {low} must be 0..maximum {high}"
+    if not per_axis and any(b[1] < a[1] for a, b in pairwise(ranges)):
+        yield "feed_ranges", "ranges", "feed ranges must be in ascending order of range"
+
+
+def _code_tables(machine: MachineDefinition) -> Iterator[Problem]:
+    if machine.tablem[130] is not ABSENT:
+        yield "tablem", 130, "location 130 must stay absent (STOREM uses it to clear VALUEM)"
+    ranges = int(_number(machine, 18))
+    default_range = machine.tablem[43]
+    if ranges > 1 and default_range is not ABSENT:
+        range_codes = [machine.tablem[113 + i] for i in range(ranges)]
+        if default_range not in range_codes:
+            yield (
+                "tablem",
+                43,
+                f"the default feed-range M code {default_range} must be one of the feed-range "
+                f"codes TABLEM(113..{112 + ranges}) = {[str(c) for c in range_codes]}",
+            )
+    circular = [machine.tableg[i] for i in (3, 4, 7, 8, 21, 22, 23, 31, 32, 33, 44, 45, 49, 50)]
+    if _number(machine, 9) == 1 and all(code is ABSENT for code in circular):
+        yield "optab", 9, "circular interpolation is on but TABLEG has no circular G code"
+
+
+def _feed_format(machine: MachineDefinition) -> Iterator[Problem]:
+    if _number(machine, 10) == 1:
+        if machine.registers.regfor[11] != 30.0:
+            yield "regfor", 11, "option 10 = +1 (EIA magic 3 feed) needs REGFOR(11) = 30"
+        if _number(machine, 26) == 0:
+            yield (
+                "optab",
+                26,
+                "option 10 = +1 cannot use the feedrate multiplier: set option 26 = 1",
+            )
+    ijk = [machine.registers.formats[i] for i in (8, 9, 10)]
+    if _number(machine, 1) == 0 and _number(machine, 26) == 0 and all(f is None for f in ijk):
+        yield "optab", 26, "option 26 = 0 (feedrate multiplier) needs I, J or K registers"
+
+
+def _output_order(machine: MachineDefinition) -> Iterator[Problem]:
+    order = machine.output_order
+    if order is None:
+        return
+    if len(order) > 30 or len(set(order)) != len(order) or not all(1 <= p <= 30 for p in order):
+        yield "output_order", "iorder", "IORDER must give distinct output positions 1..30"
+
+
+RULES: tuple[Callable[[MachineDefinition], Iterator[Problem]], ...] = (
+    _option_values,
+    _spindle_table,
+    _feed_table,
+    _code_tables,
+    _feed_format,
+    _output_order,
+)
+
+# Options the manual says must never be 0 ("processing stops"); they are only used when the
+# part program is silent, so a zero is reported at load and is fatal only when needed.
+_NEVER_ZERO = {
+    23: "assumed feedrate is 0: a motion without FEDRAT will stop the run",
+    27: "assumed spindle speed is 0: a SPINDL without a speed will stop the run",
+    34: "initial spindle direction is 0: a SPINDL without a direction will stop the run",
+    85: "assumed saddle feed mode is 0: a saddle feed without a mode will stop the run",
+}
+
+
+def check_definition(machine: MachineDefinition) -> tuple[list[Problem], list[str]]:
+    errors = [problem for rule in RULES for problem in rule(machine)]
+    warnings = [
+        f"option {number}: {text}"
+        for number, text in _NEVER_ZERO.items()
+        if machine.options[number] == 0.0
+    ]
+    return errors, warnings

@@ -1,0 +1,78 @@
+"""The TOML shape of a machine file, checked by pydantic before any table rule runs.
+
+A machine file lists only its deviations from the Standard Machine, as the manual's
+Machine Subroutines did (§5.6.6)::
+
+    [machine]
+    number = 23                 # MACHIN/GECENT,23 selects it (1..99)
+    name = "mach23"
+    title = "SAMPLE MILL"       # TAG: printed on every page, at most 36 characters
+
+    [tableg]                    # TABLEG location = G code, or "absent" (DMBITS)
+    11 = 10
+    [tablem]                    # TABLEM location = M code, or "absent"
+    3 = "absent"
+    [regstr]                    # REGSTR location = letter ("" = DBLNKS)
+    16 = "R"
+    [regfor]                    # REGFOR location = ±(10L + R), 0 = no register
+    3 = -24.0
+    [optab]                     # option number or alias = value
+    4 = 99.9999
+    [spindle_table]             # SRTAB, from SRTAB(1) upward; single cells by number
+    speeds = [1.0, 300.0]
+    cells = { 180 = 9.0 }
+    [feed_ranges]               # FRTAB, [min, max] per range, stored from the top of the store
+    ranges = [[0.1, 10.0], [7.0, 60.0]]
+    [output_order]              # IORDER: output position of each register location
+    iorder = [1, 2, 3, 5, 7, 11, 12, 4, 6, 8, 9, 10, 13, 14]
+    [heads.2]                   # multihead: head 2's REGSTR/REGFOR (start from head 1's)
+    regstr = { 3 = "U" }
+    regfor = { 3 = -33.0 }
+"""
+
+from __future__ import annotations
+
+from pydantic import BaseModel, ConfigDict, Field
+
+
+class _Section(BaseModel):
+    model_config = ConfigDict(extra="forbid")
+
+
+class MachineHeader(_Section):
+    number: int | None = Field(default=None, ge=1, le=99)
+    name: str = Field(pattern=r"^[a-z0-9][a-z0-9_.-]*$", max_length=40)
+    title: str = Field(default="", max_length=36)
+    description: str = ""
+    source: str = ""
+
+
+class SpindleTableSection(_Section):
+    speeds: list[float] = Field(default_factory=list)
+    cells: dict[int, float] = Field(default_factory=dict)
+
+
+class FeedRangesSection(_Section):
+    ranges: list[tuple[float, float]] = Field(default_factory=list)
+
+
+class OutputOrderSection(_Section):
+    iorder: list[int]
+
+
+class HeadSection(_Section):
+    regstr: dict[int, str] = Field(default_factory=dict)
+    regfor: dict[int, float] = Field(default_factory=dict)
+
+
+class MachineFile(_Section):
+    machine: MachineHeader
+    tableg: dict[int, int | str] = Field(default_factory=dict)
+    tablem: dict[int, int | str] = Field(default_factory=dict)
+    regstr: dict[int, str] = Field(default_factory=dict)
+    regfor: dict[int, float] = Field(default_factory=dict)
+    optab: dict[str, float | str] = Field(default_factory=dict)
+    spindle_table: SpindleTableSection | None = None
+    feed_ranges: FeedRangesSection | None = None
+    output_order: OutputOrderSection | None = None
+    heads: dict[int, HeadSection] = Field(default_factory=dict)

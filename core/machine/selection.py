@@ -1,0 +1,179 @@
+"""Choosing the machine for a run and changing its options from the part program
+(MACHIN/GECENT, nm [, OPTAB, n, v ...] [, LINEAR | LINCIR | PLAN]; manual §5.6, 001
+L22352-22366, L24225-24262).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+from dataclasses import dataclass, field
+
+from gecent.core.cl.records import Record, Statement, Word
+from gecent.core.errors import (
+    Diagnostic,
+    FatalError,
+    InputError,
+    NotYetSupported,
+    SourcePosition,
+)
+from gecent.core.machine.catalogue import OPTION_COUNT, catalogue
+from gecent.core.machine.definition import MachineDefinition, OptionValue
+from gecent.core.machine.loader import MachineFileInvalid
+from gecent.core.machine.rules import check_definition
+from gecent.core.plugins import PluginSet
+
+POSTPROCESSOR_NAME = "GECENT"
+# Options that must be given in output units when set by MACHIN (001 L24258-24262).
+OUTPUT_UNIT_OPTIONS = frozenset({149, 150})
+
+
+@dataclass
+class MachinRequest:
+    """What a MACHIN/GECENT statement asks for."""
+
+    number: int | None
+    options: list[tuple[int, float, SourcePosition]] = field(default_factory=list)
+    modifiers: list[str] = field(default_factory=list)
+
+
+def parse_machin(statement: Statement) -> MachinRequest | None:
+    """Decode MACHIN/GECENT,...; None when it names another postprocessor."""
+    args = list(statement.args)
+    where = statement.where
+    if not args or not isinstance(args[0], Word) or args[0].name != POSTPROCESSOR_NAME:
+        return None
+    request = MachinRequest(number=None)
+    position = 1
+    if position < len(args) and isinstance(args[position], int | float):
+        value = float(args[position])  # type: ignore[arg-type]
+        if value != int(value):
+            raise InputError(f"MACHIN/GECENT takes a whole machine number, found {value:g}", where)
+        request.number = int(value)
+        position += 1
+    while position < len(args):
+        arg = args[position]
+        if isinstance(arg, Word) and arg.name == "OPTAB":
+            position += 1
+            pairs = 0
+            while position + 1 < len(args) and all(
+                isinstance(a, int | float) for a in args[position : position + 2]
+            ):
+                option, setting = float(args[position]), float(args[position + 1])  # type: ignore[arg-type]
+                if option != int(option):
+                    raise InputError(f"OPTAB option number must be whole, found {option:g}", where)
+                request.options.append((int(option), setting, where))
+                position += 2
+                pairs += 1
+            if pairs == 0:
+                raise InputError("OPTAB must be followed by option number, value pairs", where)
+        elif isinstance(arg, Word) and arg.name in ("LINEAR", "LINCIR", "PLAN"):
+            request.modifiers.append(arg.name)
+            position += 1
+        else:
+            raise InputError(
+                f"MACHIN/GECENT: expected OPTAB, LINEAR, LINCIR or PLAN, found {arg}", where
+            )
+    return request
+
+
+def first_machin(records: Iterable[Record]) -> tuple[MachinRequest | None, list[Diagnostic]]:
+    """Read until the first MACHIN/GECENT statement, as GEINIT does (001 L2433-2437)."""
+    notes: list[Diagnostic] = []
+    for record in records:
+        if isinstance(record, Statement) and record.major == "MACHIN":
+            request = parse_machin(record)
+            if request is not None:
+                return request, notes
+            name = record.args[0] if record.args else ""
+            notes.append(
+                Diagnostic(f"MACHIN/{name} names another postprocessor; ignored", record.where)
+            )
+    return None, notes
+
+
+def resolve_machine(
+    plugins: PluginSet, override: str | MachineDefinition | None, request: MachinRequest | None
+) -> MachineDefinition:
+    """--machine wins; then MACHIN/GECENT,nm; then the Standard Machine."""
+    if isinstance(override, MachineDefinition):
+        return override
+    if override is not None:
+        pack = plugins.machine(override)
+        if pack is None:
+            raise InputError(f"machine {override!r} is not installed (see 'gecent machines')")
+        return pack.load()
+    if request is not None and request.number is not None:
+        if not 1 <= request.number <= 99:
+            raise FatalError(999, f"MACHIN/GECENT,{request.number}")
+        pack = plugins.machine(str(request.number))
+        if pack is None:
+            raise InputError(
+                f"MACHIN/GECENT,{request.number}: machine {request.number} is not installed "
+                "(see 'gecent machines')"
+            )
+        return pack.load()
+    pack = plugins.machine("standard")
+    if pack is None:
+        raise InputError("the Standard Machine is not installed; give --machine")
+    return pack.load()
+
+
+def apply_machin_options(
+    machine: MachineDefinition, request: MachinRequest
+) -> tuple[MachineDefinition, list[Diagnostic]]:
+    """Apply MACHIN/...,OPTAB,n,v pairs and the LINEAR/LINCIR modifiers."""
+    notes: list[Diagnostic] = []
+    changes: dict[int, OptionValue] = {}
+    cat = catalogue()
+    for number, value, where in request.options:
+        if not 1 <= number <= OPTION_COUNT:
+            raise InputError(
+                f"MACHIN/GECENT,...,OPTAB: there is no option {number} "
+                f"(options are 1..{OPTION_COUNT})",
+                where,
+            )
+        spec = cat.option(number)
+        if spec.fixed:
+            notes.append(
+                Diagnostic(
+                    f"OPTION {number} ({spec.alias}) CANNOT BE CHANGED BY MACHIN; VALUE IGNORED",
+                    where,
+                )
+            )
+        elif spec.kind == "text":
+            notes.append(
+                Diagnostic(
+                    f"OPTION {number} ({spec.alias}) HOLDS A TAPE CODE AND "
+                    "CANNOT BE SET BY MACHIN; VALUE IGNORED",
+                    where,
+                )
+            )
+        else:
+            changes[number] = value
+    for modifier in request.modifiers:
+        if modifier == "PLAN":
+            raise NotYetSupported("MACHIN/...,PLAN (the GEPLAD planning pre-pass)")
+        changes[28] = 0.0 if modifier == "LINEAR" else 1.0
+    if not changes:
+        return machine, notes
+    changed = machine.with_options(changes)
+    errors, _ = check_definition(changed)
+    if errors:
+        table, entry, rule = errors[0]
+        position = request.options[0][2] if request.options else None
+        raise InputError(
+            f"MACHIN/GECENT,...,OPTAB makes machine {machine.label} invalid: "
+            f"[{table}] entry {entry}: {rule}",
+            position,
+        )
+    return changed, notes
+
+
+__all__ = [
+    "MachinRequest",
+    "MachineFileInvalid",
+    "apply_machin_options",
+    "first_machin",
+    "parse_machin",
+    "resolve_machine",
+]

@@ -1,0 +1,79 @@
+"""Command blocks: the DBFSEG cells and the block CODE (manual §3.2-3.3, 001 L629-823)."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from enum import IntEnum
+
+from gecent.core.absent import ABSENT, Absent
+
+CELLS = 30
+
+
+class Code(IntEnum):
+    """Command-block identification CODE (DBFSEG(15)); drives print and punch."""
+
+    LINEAR = 0
+    NONMOTION = 1
+    AUX_ONLY = -1
+    ROTARY_ABSOLUTE = 2
+    ROTARY_INCREMENTAL = -2
+    FROM = 3
+    TURRET_CORRECTION = -3
+    DWELL = 4
+    G_ONLY = -4
+    END = 5
+    RESET = -5
+    INSERT = 6
+    BREAK = -6
+    PPRINT = 7
+    PARTNO = -7
+    TMARK = 8
+    LEADER = -8
+    COMMENT = 9
+    INFORMATION = -9
+    CIRCLE_XY_CLW = 10
+    CIRCLE_XY_CCLW = -10
+    CIRCLE_ZX_CLW = 11
+    CIRCLE_ZX_CCLW = -11
+    CIRCLE_YZ_CLW = 12
+    CIRCLE_YZ_CCLW = -12
+    THREAD_5 = 13
+    THREAD_6 = -13
+    MULTIHEAD_TURRET_1 = 14
+    MULTIHEAD_TURRET_2 = -14
+    AUX_HEAD_IPM = 15
+    POSITION_XY = 16
+    POSITION_Z = -16
+    MULTIHEAD_1 = 17
+    MULTIHEAD_2 = -17
+    FINI = 18
+
+
+# Blocks that never reach the tape (manual §3.5.3.2 per-CODE disposition).
+NOT_PUNCHED = frozenset(
+    {Code.FROM, Code.RESET, Code.PPRINT, Code.COMMENT, Code.INFORMATION, Code.FINI}
+)
+NOT_PRINTED = frozenset({Code.RESET, Code.INFORMATION, Code.FINI})
+TEXT_CODES = frozenset({Code.INSERT, Code.PPRINT, Code.PARTNO, Code.COMMENT})
+
+
+@dataclass(slots=True)
+class Block:
+    """One command block: cells 1..30 as in DBFSEG (index 0 unused) plus its CODE.
+
+    Text blocks (PARTNO, PPRINT, INSERT, comments) carry their text instead of cells.
+    """
+
+    code: Code
+    record: int | None = None
+    text: str | None = None
+    cells: list[float | Absent] = field(default_factory=lambda: [ABSENT] * (CELLS + 1))
+
+    @property
+    def punched(self) -> bool:
+        return self.code not in NOT_PUNCHED
+
+    @property
+    def printed(self) -> bool:
+        return self.code not in NOT_PRINTED

@@ -1,0 +1,1 @@
+"""ACME VMC-1: an example third-party gecent machine pack."""

@@ -1,0 +1,1 @@
+"""Built-in gecent plugins, each registered through its own ``gecent`` entry point."""

@@ -1,0 +1,1 @@
+"""MACFUN plugins: machine-specific special functions (manual §5.6.7)."""

@@ -1,0 +1,1 @@
+"""Spindle-type plugins (option 19), one module per type (manual §4.5)."""

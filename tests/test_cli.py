@@ -1,0 +1,127 @@
+"""The gecent command: plugin and machine listings, machine show, post and its errors."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+from click.testing import CliRunner
+from gecent.core.cli import main
+
+from .conftest import ROOT, SHARED
+
+HELLO = ROOT / "examples" / "hello.apt"
+
+
+def run(*args: str) -> tuple[int, str, str]:
+    result = CliRunner().invoke(main, list(args))
+    return result.exit_code, result.stdout, result.stderr
+
+
+def test_list_plugins_json_names_every_family() -> None:
+    code, out, _ = run("--list-plugins", "--json")
+    assert code == 0
+    data = json.loads(out)
+    families = {row["family"] for row in data["plugins"]}
+    assert {"machines", "printouts", "readers"} <= families
+    row = next(r for r in data["plugins"] if r["id"] == "mach23")
+    assert row == {
+        "family": "machines",
+        "id": "mach23",
+        "name": "mach23",
+        "distribution": "gecent",
+        "version": row["version"],
+        "module": "gecent.plugins.machines.mach23",
+    }
+    assert data["failures"] == []
+
+
+def test_list_plugins_table() -> None:
+    code, out, _ = run("--list-plugins")
+    assert code == 0 and out.splitlines()[0].split() == [
+        "FAMILY",
+        "ID",
+        "NAME",
+        "DISTRIBUTION",
+        "VERSION",
+        "MODULE",
+    ]
+
+
+def test_machines_lists_the_samples() -> None:
+    code, out, _ = run("machines", "--json")
+    assert code == 0
+    numbers = {row["number"] for row in json.loads(out)}
+    assert {4, 23, 24, 40, 51} <= numbers
+
+
+def test_machine_show_readable_and_json() -> None:
+    code, out, _ = run("machine", "show", "4")
+    assert code == 0
+    assert "machine 4 (mach04): SAMPLE LATHE" in out and "+Z-X (option 59)" in out
+    assert "  34 thread_constant_lead" in out and "range 2: 18, 600" in out
+    code, out, _ = run("machine", "show", "mach24", "--json")
+    data = json.loads(out)
+    assert data["number"] == 24 and len(data["spindle_ranges"]) == 3
+    assert next(o for o in data["options"] if o["number"] == 1)["value"] == 1.0
+
+
+def test_machine_show_unknown_and_bad_file(tmp_path: Path) -> None:
+    code, _, err = run("machine", "show", "97")
+    assert code == 2 and "not installed" in err
+    bad = tmp_path / "bad.toml"
+    bad.write_text('[machine]\nname = "bad"\n[optab]\n300 = 1.0\n')
+    code, _, err = run("machine", "show", str(bad))
+    assert code == 2 and f"{bad}: error: [optab] entry 300: unknown option" in err
+    assert "Traceback" not in err
+
+
+def test_post_hello_writes_tape_and_listing(tmp_path: Path) -> None:
+    tape, listing = tmp_path / "h.tape", tmp_path / "h.lis"
+    code, _, err = run("post", str(HELLO), "-o", str(tape), "--listing", str(listing))
+    assert code == 0, err
+    assert tape.read_text() == "BRACKET4711OP10\nN001M00\n"
+    text = listing.read_text()
+    assert text.startswith("***GENERAL ELECTRIC GECENT III POSTPROCESSOR***\nSAMPLE MILL")
+    assert "CLAMP THE PART ON THE LEFT STOP" in text
+    first = (tape.read_bytes(), listing.read_bytes())
+    run("post", str(HELLO), "-o", str(tape), "--listing", str(listing))
+    assert (tape.read_bytes(), listing.read_bytes()) == first  # deterministic
+
+
+def test_post_machine_override_and_option_change(tmp_path: Path) -> None:
+    source = tmp_path / "p.apt"
+    source.write_text("PARTNO X\nMACHIN/GECENT,23,OPTAB,7,3\nFINI\n")
+    code, _, err = run("post", str(source), "--machine", "4")
+    assert code == 0
+    assert "MACHIN/GECENT,23 IGNORED: THE RUN USES MACHINE 4 (mach04)" in err
+    assert "OPTION 7 (spindle_range_count) CANNOT BE CHANGED BY MACHIN" in err
+    assert "SAMPLE LATHE" in (tmp_path / "p.lis").read_text()
+
+
+def test_unsupported_statement_stops_without_output(tmp_path: Path) -> None:
+    source = tmp_path / "u.apt"
+    source.write_text("PARTNO X\nMACHIN/GECENT,23\nCOOLNT/ON\nFINI\n")
+    code, _, err = run("post", str(source))
+    assert code == 3
+    assert err.strip() == f"{source}:3 (record 3): error: not yet supported: COOLNT statement"
+    assert not (tmp_path / "u.tape").exists() and not (tmp_path / "u.lis").exists()
+
+
+def test_malformed_statement_is_exit_2_with_position(tmp_path: Path) -> None:
+    source = tmp_path / "m.apt"
+    source.write_text("PARTNO X\nGOTO / 1, 2,, 3\nFINI\n")
+    code, _, err = run("post", str(source))
+    assert code == 2 and err.startswith(f"{source}:2:13: error: expected a value before ','")
+
+
+def test_corpus_file_stops_at_the_first_unbuilt_statement() -> None:
+    code, _, err = run(
+        "post",
+        str(SHARED / "corpus" / "creo" / "bohren_1.ncl.8"),
+        "-o",
+        "/dev/null",
+        "--listing",
+        "/dev/null",
+    )
+    assert code == 3 and "bohren_1.ncl.8:7 (record 7): error: not yet supported: UNITS" in err

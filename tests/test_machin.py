@@ -1,0 +1,67 @@
+"""MACHIN/GECENT,nm,OPTAB,n,v from the part program (spec 07 §7.1, WE-1)."""
+
+from __future__ import annotations
+
+import pytest
+from gecent.core.cl.records import Statement, Word
+from gecent.core.errors import FatalError, InputError, NotYetSupported
+from gecent.core.machine.selection import apply_machin_options, parse_machin, resolve_machine
+from gecent.core.plugins import PluginSet
+
+
+def machin(*args: object) -> Statement:
+    converted = tuple(Word(a, None) if isinstance(a, str) else a for a in args)
+    return Statement("t.apt", 1, 1, "MACHIN", 1015, converted)  # type: ignore[arg-type]
+
+
+def test_option_change_we1(plugins: PluginSet) -> None:
+    request = parse_machin(machin("GECENT", 40, "OPTAB", 4, 20))
+    assert request is not None and request.number == 40
+    machine = resolve_machine(plugins, None, request)
+    changed, notes = apply_machin_options(machine, request)
+    assert changed.option(4) == 20.0 and notes == []
+
+
+def test_non_reassignable_option_is_refused(plugins: PluginSet) -> None:
+    request = parse_machin(machin("GECENT", 23, "OPTAB", 7, 3, 4, 50))
+    assert request is not None
+    machine = resolve_machine(plugins, None, request)
+    changed, notes = apply_machin_options(machine, request)
+    assert changed.option(7) == machine.option(7) and changed.option(4) == 50.0
+    assert len(notes) == 1 and "OPTION 7" in notes[0].text
+
+
+def test_linear_and_lincir_set_option_28(plugins: PluginSet) -> None:
+    for word, value in (("LINEAR", 0.0), ("LINCIR", 1.0)):
+        request = parse_machin(machin("GECENT", 23, word))
+        assert request is not None
+        changed, _ = apply_machin_options(resolve_machine(plugins, None, request), request)
+        assert changed.option(28) == value
+
+
+def test_plan_is_not_yet_supported(plugins: PluginSet) -> None:
+    request = parse_machin(machin("GECENT", 24, "PLAN"))
+    assert request is not None
+    with pytest.raises(NotYetSupported, match="PLAN"):
+        apply_machin_options(resolve_machine(plugins, None, request), request)
+
+
+def test_machine_number_out_of_range_is_fatal_999(plugins: PluginSet) -> None:
+    request = parse_machin(machin("GECENT", 100))
+    with pytest.raises(FatalError) as caught:
+        resolve_machine(plugins, None, request)
+    assert caught.value.number == 999
+
+
+def test_uninstalled_machine_and_other_postprocessors(plugins: PluginSet) -> None:
+    with pytest.raises(InputError, match="machine 98 is not installed"):
+        resolve_machine(plugins, None, parse_machin(machin("GECENT", 98)))
+    assert parse_machin(machin("UNCX01", 1)) is None
+    assert resolve_machine(plugins, None, None).name == "standard"
+
+
+def test_option_change_that_breaks_the_machine(plugins: PluginSet) -> None:
+    request = parse_machin(machin("GECENT", 23, "OPTAB", 59, 191415))
+    assert request is not None
+    with pytest.raises(InputError, match="fatal error 7"):
+        apply_machin_options(resolve_machine(plugins, None, request), request)
