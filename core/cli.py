@@ -2,16 +2,22 @@
 
 from __future__ import annotations
 
+import io
 import json
 import os
 import sys
-from collections.abc import Callable
+from collections.abc import Callable, Iterable
 from functools import wraps
 from pathlib import Path
 from typing import Any, TypeVar
 
 import click
 from gecent.core import __version__
+from gecent.core.cl.binary_layout import Layout, LayoutError, parse_layout
+from gecent.core.cl.binary_writer import write_binary
+from gecent.core.cl.clprint import clprint_lines, record_json
+from gecent.core.cl.records import Record
+from gecent.core.cl.stream import read_cl
 from gecent.core.errors import EXIT_INTERNAL, GecentError, InputError, NotYetSupported
 from gecent.core.families import FAMILIES, MachinePack
 from gecent.core.machine.definition import MachineDefinition
@@ -36,6 +42,11 @@ def _reporting_errors(function: F) -> F:
             sys.exit(exc.exit_status)
         except click.exceptions.Exit:
             raise
+        except BrokenPipeError:
+            # the reader of our output (head, less) has gone: stop quietly, as cat does
+            devnull = os.open(os.devnull, os.O_WRONLY)
+            os.dup2(devnull, sys.stdout.fileno())
+            sys.exit(0)
         except Exception as exc:
             if os.environ.get("GECENT_DEBUG"):
                 raise
@@ -207,6 +218,75 @@ def post(
     write_atomically(listing_path or stem.with_suffix(".lis"), listing.encode("utf-8"))
     for diagnostic in result.diagnostics:
         click.echo(str(diagnostic), err=True)
+
+
+def _layout(name: str | None) -> Layout | None:
+    if name is None:
+        return None
+    try:
+        return parse_layout(name)
+    except LayoutError as exc:
+        raise InputError(str(exc)) from None
+
+
+@main.command("cl")
+@click.argument("input_path", metavar="INPUT", type=click.Path(dir_okay=False))
+@click.option("--json", "as_json", is_flag=True, help="JSON lines instead of a CL print.")
+@click.option(
+    "--layout",
+    "in_layout",
+    metavar="LAYOUT",
+    help="Binary INPUT layout (apt4, manual4, manual8, with -le or -be); default: detected.",
+)
+@click.option(
+    "--to",
+    "out_layout",
+    metavar="LAYOUT",
+    help="Write a binary CL file in this layout (with -o) instead of printing.",
+)
+@click.option(
+    "-o",
+    "--output",
+    "output_path",
+    type=click.Path(dir_okay=False),
+    help="Output file (default: standard output; required with --to).",
+)
+@_reporting_errors
+def cl_command(
+    input_path: str,
+    as_json: bool,
+    in_layout: str | None,
+    out_layout: str | None,
+    output_path: str | None,
+) -> None:
+    """Print the records of a CL file (text or binary), or convert it to binary."""
+    records = read_cl(input_path, _plugins(), _layout(in_layout))
+    if out_layout is not None:
+        layout = _layout(out_layout)
+        assert layout is not None
+        if output_path is None:
+            raise InputError("--to needs -o FILE for the binary CL file")
+        buffer = io.BytesIO()
+        write_binary(records, buffer, layout)
+        write_atomically(output_path, buffer.getvalue())
+        return
+    if output_path is not None:
+        lines = io.StringIO()
+        _print_records(records, as_json, lines.write)
+        write_atomically(output_path, lines.getvalue().encode("utf-8"))
+        return
+    _print_records(records, as_json, sys.stdout.write)
+
+
+def _print_records(records: Iterable[Record], as_json: bool, write: Callable[[str], Any]) -> None:
+    if as_json:
+        for record in records:
+            write(json.dumps(record_json(record)) + "\n")
+        return
+    write("TAPENO/  ISN\n")
+    for record in records:
+        for line in clprint_lines(record):
+            write(line + "\n")
 
 
 if __name__ == "__main__":  # pragma: no cover

@@ -62,14 +62,24 @@ FATAL_ERRORS: dict[int, tuple[str, str]] = {
 
 @dataclass(frozen=True, slots=True)
 class SourcePosition:
-    """Where something came from: a file, and a line, column or CL record number in it."""
+    """Where something came from: a file, and a line, column or CL record number in it.
+
+    For a binary CL file ``offset`` is the byte offset of the record and ``line`` the ISN
+    (source statement number) the APT processor gave it."""
 
     file: str
     line: int | None = None
     column: int | None = None
     record: int | None = None
+    offset: int | None = None
 
     def __str__(self) -> str:
+        if self.offset is not None:
+            where = [f"record {self.record}"] if self.record is not None else []
+            if self.line is not None:
+                where.append(f"ISN {self.line}")
+            suffix = f" ({', '.join(where)})" if where else ""
+            return f"{self.file}: byte {self.offset}{suffix}"
         parts = [self.file]
         if self.line is not None:
             parts.append(str(self.line))

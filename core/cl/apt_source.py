@@ -38,11 +38,21 @@ from gecent.core.errors import InputError, SourcePosition
 TEXT_MAJORS = frozenset({"PARTNO", "PPRINT", "INSERT"})
 _MOTION = {"FROM": MotionSubtype.FROM, "GOTO": MotionSubtype.GOTO, "GODLTA": MotionSubtype.GODLTA}
 _ARELEM = {"INTOL": 4, "OUTTOL": 5, "CUTTER": 6}
+# Flag words an APT processor turns into type-6000 records (001 L3569-3576): subtype, item 4.
+_ARELEM_FLAGS = {
+    "CUT": (1, 0.0),
+    "DNTCUT": (1, 1.0),
+    "2DCALC": (2, 0.0),
+    "3DCALC": (2, 1.0),
+    "NDTEST": (2, 2.0),
+}
 _TOKEN = re.compile(
     r"\s*(?:(?P<number>[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?)(?![A-Za-z0-9_])"
     r"|(?P<word>[A-Za-z][A-Za-z0-9_]*)|(?P<comma>,)|(?P<end>$))"
 )
-_MAJOR = re.compile(r"\s*([A-Za-z][A-Za-z0-9_]*)")
+_NUMBER_ITEM = r"\s*[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?\s*"
+_NUMBER_LIST = re.compile(rf"{_NUMBER_ITEM}(?:,{_NUMBER_ITEM})*\Z")
+_MAJOR = re.compile(r"\s*((?:[A-Za-z]|\d+[A-Za-z])[A-Za-z0-9_]*)")
 
 
 class _Line:
@@ -176,6 +186,8 @@ class AptSourceReader:
 
     def _arguments(self, logical: _Line, start: int) -> list[Arg]:
         text = logical.text
+        if _NUMBER_LIST.match(text, start):  # most records: numbers only (GOTO, FEDRAT)
+            return [float(item) for item in text[start:].split(",")]
         args: list[Arg] = []
         position = start
         expect_value = True
@@ -202,8 +214,7 @@ class AptSourceReader:
                     raise self._error(logical, token.start(kind), "expected ',' between values")
                 value = token.group(kind)
                 if kind == "number":
-                    is_float = any(c in value for c in ".eE")
-                    args.append(float(value) if is_float else int(value))
+                    args.append(float(value))
                 else:
                     name = value.upper()
                     args.append(Word(name, self._vocabulary.minor_code(name)))
@@ -213,14 +224,14 @@ class AptSourceReader:
     def _numbers(
         self, logical: _Line, major: str, args: list[Arg], counts: tuple[int, ...]
     ) -> tuple[float, ...]:
-        if any(isinstance(a, Word | str) for a in args):
+        if any(isinstance(a, Word) for a in args):
             raise self._error(
                 logical, 0, f"{major} takes numbers only, found {', '.join(map(str, args))}"
             )
         if len(args) not in counts:
             expected = " or ".join(str(c) for c in counts)
             raise self._error(logical, 0, f"{major} takes {expected} values, found {len(args)}")
-        return tuple(float(a) for a in args)  # type: ignore[arg-type]
+        return tuple(float(a) for a in args if not isinstance(a, Word))
 
     def _record(self, logical: _Line, major: str, args: list[Arg]) -> Record:
         file, line, number = self.file, logical.line, self.number
@@ -236,6 +247,11 @@ class AptSourceReader:
             return Circle(file, line, number, self._numbers(logical, major, args, (7,)))
         if major == "FINI":
             return Fini(file, line, number)
+        if major in _ARELEM_FLAGS:
+            if args:
+                raise self._error(logical, 0, f"{major} takes no values")
+            flag_subtype, flag = _ARELEM_FLAGS[major]
+            return Arelem(file, line, number, flag_subtype, (flag,))
         if major in _ARELEM:
             values = self._numbers(logical, major, args, tuple(range(1, 8)))
             return Arelem(file, line, number, _ARELEM[major], values)

@@ -9,7 +9,7 @@ their own so listings can show them; they have no manual type.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from enum import IntEnum
 
 from gecent.core.errors import SourcePosition
@@ -33,10 +33,15 @@ class MotionSubtype(IntEnum):
     CONTINUATION = 6
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True, slots=True, eq=False)
 class Word:
     """A vocabulary word as it appears in a statement; ``code`` is None for a word the
-    vocabulary does not know (kept, never dropped: the dispatcher decides)."""
+    vocabulary does not know (kept, never dropped: the dispatcher decides).
+
+    Two words are the same word when they have the same code, as for the postprocessor,
+    which reads only codes: MMPM and PREHET share code 171, and a binary CL file can only
+    say 171.
+    """
 
     name: str
     code: int | None
@@ -44,19 +49,37 @@ class Word:
     def __str__(self) -> str:
         return self.name
 
+    def _key(self) -> int | str:
+        return self.code if self.code is not None else self.name
 
-Arg = Word | int | float | str
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, Word) and self._key() == other._key()
+
+    def __hash__(self) -> int:
+        return hash(self._key())
+
+
+Arg = Word | int | float
+"""A statement argument: a word, an APT integer (binary CL only) or a number.
+
+Numbers in postprocessor statements are always floating point, as an APT processor
+writes them; ``int`` is kept for the integer items of binary CL files."""
 
 
 @dataclass(frozen=True, slots=True)
 class Record:
-    file: str
+    """Where a record came from: ``line`` is the source line (APT text) or the ISN of the
+    statement that produced it (binary CL); ``number`` the CL record number; ``offset`` the
+    byte offset of a binary record. Records compare by position and content, not by file."""
+
+    file: str = field(compare=False)
     line: int | None
     number: int
+    offset: int | None = field(default=None, kw_only=True, compare=False)
 
     @property
     def where(self) -> SourcePosition:
-        return SourcePosition(self.file, self.line, None, self.number)
+        return SourcePosition(self.file, self.line, None, self.number, self.offset)
 
 
 @dataclass(frozen=True, slots=True)
@@ -71,18 +94,29 @@ class PartText(Record):
     text: str
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True, slots=True, eq=False)
 class Statement(Record):
     """Type 2000: a postprocessor statement, ``MAJOR/args``.
 
-    ``args`` keeps the order and the int/float/text distinction of the source; ``text``
-    holds the verbatim text of PARTNO, PPRINT and INSERT.
+    ``args`` keeps the order and the word/number distinction of the source; ``text``
+    holds the verbatim text of PARTNO, PPRINT and INSERT. Statements compare by major
+    code (by name when the vocabulary has no code), like words.
     """
 
     major: str
     code: int | None
     args: tuple[Arg, ...] = ()
     text: str | None = None
+
+    def _key(self) -> tuple[object, ...]:
+        major = self.code if self.code is not None else self.major
+        return (self.line, self.number, major, self.args, self.text)
+
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, Statement) and self._key() == other._key()
+
+    def __hash__(self) -> int:
+        return hash(self._key())
 
     def words(self) -> tuple[str, ...]:
         return tuple(a.name for a in self.args if isinstance(a, Word))
@@ -97,6 +131,20 @@ class Circle(Record):
 
     values: tuple[float, ...]
     name: str = ""
+    subscript: int = 0
+    position: int = 0
+
+
+@dataclass(frozen=True, slots=True)
+class Surface(Record):
+    """Type 3000 data for a drive surface that is not a circle (GECENT ignores it, §3.3.5)."""
+
+    surface_type: int
+    values: tuple[float, ...]
+    name: str = ""
+    subscript: int = 0
+    position: int = 0
+    use: int = 2
 
 
 @dataclass(frozen=True, slots=True)
@@ -109,6 +157,8 @@ class Motion(Record):
 
     subtype: MotionSubtype
     points: tuple[tuple[float, ...], ...]
+    name: str = ""
+    subscript: int = 0
 
 
 @dataclass(frozen=True, slots=True)
@@ -129,3 +179,13 @@ class Multiax(Record):
 @dataclass(frozen=True, slots=True)
 class Fini(Record):
     """Type 14000: the end of the CL file."""
+
+
+@dataclass(frozen=True, slots=True)
+class Other(Record):
+    """A record of a type GECENT reads and ignores (4000, 7000, 8000, 10000-13000, and
+    unused subtypes), kept so that nothing is lost on the way through."""
+
+    record_type: int
+    subtype: int
+    items: tuple[Arg, ...] = ()

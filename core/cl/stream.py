@@ -1,9 +1,12 @@
-"""Open a CL file with the reader whose format it matches."""
+"""Open a CL file with the reader whose format it matches, and look ahead in the stream."""
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from collections import deque
+from collections.abc import Callable, Iterable, Iterator
 
+from gecent.core.cl.binary_layout import Layout
+from gecent.core.cl.binary_reader import read_binary
 from gecent.core.cl.records import Record
 from gecent.core.errors import InputError, SourcePosition
 from gecent.core.families import ClReader
@@ -18,6 +21,10 @@ def choose_reader(path: str, plugins: PluginSet) -> ClReader:
             head = handle.read(SNIFF_BYTES)
     except OSError as exc:
         raise InputError(f"cannot read CL file: {exc.strerror}", SourcePosition(path)) from None
+    if not head:
+        raise InputError(
+            "empty CL file: expected CL records ending with FINI", SourcePosition(path)
+        )
     readers: list[ClReader] = [info.obj for info in plugins.family("readers").values()]
     for reader in readers:
         if reader.sniff(head):
@@ -26,5 +33,56 @@ def choose_reader(path: str, plugins: PluginSet) -> ClReader:
     raise InputError(f"no CL reader recognises this file (readers: {names})", SourcePosition(path))
 
 
-def read_cl(path: str, plugins: PluginSet) -> Iterator[Record]:
+def read_cl(path: str, plugins: PluginSet, layout: Layout | None = None) -> Iterator[Record]:
+    """The records of a CL file; ``layout`` forces a binary layout instead of sniffing."""
+    if layout is not None:
+        return read_binary(path, layout)
     return choose_reader(path, plugins).read(path)
+
+
+class Lookahead:
+    """A record stream that can be peeked ahead without consuming it.
+
+    Circular interpolation needs the motion after a circle record, tool look-ahead the next
+    LOADTL, macros the next records: each peeks, and memory holds only what was peeked.
+    """
+
+    __slots__ = ("_buffer", "_records")
+
+    def __init__(self, records: Iterable[Record]) -> None:
+        self._records = iter(records)
+        self._buffer: deque[Record] = deque()
+
+    def __iter__(self) -> Lookahead:
+        return self
+
+    def __next__(self) -> Record:
+        if self._buffer:
+            return self._buffer.popleft()
+        return next(self._records)
+
+    def _fill(self, count: int) -> bool:
+        while len(self._buffer) < count:
+            record = next(self._records, None)
+            if record is None:
+                return False
+            self._buffer.append(record)
+        return True
+
+    def peek(self, ahead: int = 1) -> Record | None:
+        """The record ``ahead`` places on (1 = the next one), or None past the end."""
+        if ahead < 1:
+            raise ValueError("peek looks at least one record ahead")
+        return self._buffer[ahead - 1] if self._fill(ahead) else None
+
+    def find(self, wanted: Callable[[Record], bool], limit: int | None = None) -> Record | None:
+        """The first record ahead that is ``wanted``, looking at most ``limit`` records on."""
+        ahead = 1
+        while limit is None or ahead <= limit:
+            record = self.peek(ahead)
+            if record is None:
+                return None
+            if wanted(record):
+                return record
+            ahead += 1
+        return None

@@ -11,6 +11,8 @@ from dataclasses import dataclass
 from functools import cache
 from importlib import resources
 
+from gecent.core.cl.records import Word
+
 
 @dataclass(frozen=True)
 class Vocabulary:
@@ -19,12 +21,22 @@ class Vocabulary:
     record_words: dict[str, int]
     major_names: dict[int, str]
     minor_names: dict[int, str]
+    record_subtype: dict[str, int]
+    units_value: dict[str, int]
+    apt4_major: dict[str, int]
 
     def major_code(self, name: str) -> int | None:
         return self.major.get(name)
 
     def minor_code(self, name: str) -> int | None:
         return self.minor.get(name)
+
+    def major_name(self, code: int) -> str:
+        """The preferred name of a major code; ``#code`` for a code the vocabulary lacks."""
+        return self.major_names.get(code, f"#{code}")
+
+    def minor_word(self, code: int) -> Word:
+        return Word(self.minor_names.get(code, f"#{code}"), code)
 
 
 @cache
@@ -40,4 +52,13 @@ def vocabulary() -> Vocabulary:
     minor_names: dict[int, str] = {}
     for name, code in minor.items():
         minor_names.setdefault(code, name)
-    return Vocabulary(major, minor, record_words, major_names, minor_names)
+    return Vocabulary(
+        major,
+        minor,
+        record_words,
+        major_names,
+        minor_names,
+        {str(k): int(v) for k, v in data.get("record_subtype", {}).items()},
+        {str(k): int(v) for k, v in data.get("units_value", {}).items()},
+        {str(k): int(v) for k, v in data.get("major_apt4", {}).items()},
+    )
