@@ -5,6 +5,7 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
+import pytest
 from click.testing import CliRunner
 from gecent.core.cli import main
 
@@ -115,6 +116,7 @@ def test_malformed_statement_is_exit_2_with_position(tmp_path: Path) -> None:
     assert code == 2 and err.startswith(f"{source}:2:13: error: expected a value before ','")
 
 
+@pytest.mark.skipif(not (SHARED / "corpus").is_dir(), reason="shared corpus not present")
 def test_corpus_file_stops_at_the_first_unbuilt_statement() -> None:
     code, _, err = run(
         "post",
