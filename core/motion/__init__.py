@@ -1,0 +1,1 @@
+"""The motion element (manual §3.4): rounding, linear moves, segmentation, circles."""

@@ -1,0 +1,21 @@
+"""Rounding CL values to the machine step (SRAREC/SROREC, manual §3.4.1, 001 L3946-4006).
+
+Machine positions are kept as whole numbers of steps, so that the manual's values (22.2469
+at a 0.0001 step) are exact and departures never drift: a departure is the difference of two
+integers, and the half-step zero test of GOLINE (001 L4268-4290) is "the difference is 0".
+"""
+
+from __future__ import annotations
+
+ROUND_UP_FROM = 0.5001  # printed "0.50010" (L4000) and "0.5001" (L5505): 0.4999 step rounds up
+
+
+def to_steps(value: float, step: float) -> int:
+    """``value`` as a signed whole number of steps: sign(v) * int(|v| / step + 0.5001)."""
+    count = int(abs(value) / step + ROUND_UP_FROM)
+    return -count if value < 0 else count
+
+
+def round_to_step(value: float, step: float) -> float:
+    """SRAREC: ``value`` rounded to the step, as a number of the machine's units."""
+    return to_steps(value, step) * step

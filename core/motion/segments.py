@@ -1,0 +1,49 @@
+"""Segmentation of a long linear move (manual §3.4.3.2-3.4.3.2.1, 001 L4317-4673).
+
+When a departure exceeds the largest value its register holds (DEPMAX, option 4) the move
+is cut into NSEG = <largest |departure| / DEPMAX> + 1 equal segments. Each segment is the
+rounded difference between the exact running point and the actual (rounded) previous
+machine point, so no pulse is lost and the path does not drift: the error after any segment
+is under half a step (the telescoping proof of §3.4.3.2.1).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator, Sequence
+
+from gecent.core.motion.rounding import ROUND_UP_FROM
+
+
+def segment_count(departures: Sequence[int], limits: Sequence[int]) -> int:
+    """NSEG: 1 when every |departure| fits its limit, else <largest ratio> + 1.
+
+    Departures and limits are in steps; ``limits[k]`` is DEPMAX for axis k (the manual uses
+    one DEPMAX for the linear axes and ROTMAX for the rotary ones)."""
+    worst = 0.0
+    for departure, limit in zip(departures, limits, strict=True):
+        if abs(departure) > limit:
+            worst = max(worst, abs(departure) / limit)
+    return int(worst) + 1 if worst else 1
+
+
+def segments(departures: Sequence[int], count: int) -> Iterator[tuple[int, ...]]:
+    """The per-segment departures, in steps, of a move split into ``count`` segments.
+
+    For each axis: the exact point advances by departure / count; each output is that exact
+    point minus the actual point so far, rounded to a whole step (001 L4514-4559)."""
+    share = [d / count for d in departures]
+    exact = [0.0] * len(departures)
+    actual = [0] * len(departures)
+    for index in range(count):
+        out = []
+        for axis, size in enumerate(share):
+            if index == count - 1:
+                step = departures[axis] - actual[axis]  # exact: the end point is whole steps
+            else:
+                exact[axis] += size
+                rest = exact[axis] - actual[axis]
+                magnitude = int(abs(rest) + ROUND_UP_FROM)
+                step = -magnitude if rest < 0 else magnitude
+            actual[axis] += step
+            out.append(step)
+        yield tuple(out)
