@@ -11,11 +11,17 @@ from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
 
 from gecent.core.cl.records import (
+    Arelem,
+    Circle,
     Comment,
     Fini,
+    Motion,
+    Other,
     PartText,
     Record,
     Statement,
+    Surface,
+    Word,
 )
 from gecent.core.cl.stream import read_cl
 from gecent.core.errors import Diagnostic, InputError, NotYetSupported
@@ -26,8 +32,11 @@ from gecent.core.machine.selection import (
     parse_machin,
     resolve_machine,
 )
+from gecent.core.motion.linear import LinearMotion
 from gecent.core.output.block import Block, Code
+from gecent.core.output.element import OutputElement
 from gecent.core.plugins import PluginSet
+from gecent.core.state import PostState
 
 
 @dataclass
@@ -40,65 +49,148 @@ class RunResult:
 
 
 class Run:
-    """The state of one run and the record dispatch."""
+    """The state of one run and the record dispatch (spec 02 §7)."""
 
     def __init__(self, machine: MachineDefinition) -> None:
         self.result = RunResult(machine=machine)
+        self.state = PostState(machine)
         self.finished = False
+        self._output: OutputElement | None = None
+        self._motion: LinearMotion | None = None
         self._statements: dict[str, Callable[[Statement], None]] = {
             "PARTNO": self._partno,
             "PPRINT": self._pprint,
             "INSERT": self._insert,
             "MACHIN": self._machin,
+            "FEDRAT": self._fedrat,
         }
 
     @property
     def machine(self) -> MachineDefinition:
         return self.result.machine
 
+    @property
+    def output(self) -> OutputElement:
+        if self._output is None:
+            self._output = OutputElement(self.state)
+        return self._output
+
+    @property
+    def motion(self) -> LinearMotion:
+        if self._motion is None:
+            self._motion = LinearMotion(self.state, self.output.output)
+        return self._motion
+
     def warn(self, diagnostic: Diagnostic) -> None:
         self.result.diagnostics.append(diagnostic)
-        self.result.blocks.append(
+        self._text(
             Block(
                 Code.COMMENT, diagnostic.where.record if diagnostic.where else None, diagnostic.text
             )
         )
+
+    def _text(self, block: Block) -> None:
+        """Text blocks bypass OUTPUT: they take no N and leave the pending S and M alone."""
+        self.output.emitted.append(block)
 
     def process(self, records: Iterator[Record]) -> RunResult:
         for record in records:
             self.result.records += 1
             if self.finished:
                 raise InputError("record after FINI", record.where)
-            if isinstance(record, Statement):
+            self.state.sequence = record.number
+            if isinstance(record, Motion):
+                self._motion_record(record)
+            elif isinstance(record, Statement):
                 handler = self._statements.get(record.major)
                 if handler is None:
                     raise NotYetSupported(f"{record.major} statement", record.where)
                 handler(record)
+            elif isinstance(record, Arelem):
+                self._arelem(record)
+            elif isinstance(record, Circle):
+                if self.machine.number_option(9) == 1:
+                    raise NotYetSupported("circular interpolation (CIRCLE record)", record.where)
+                # a linear-only control ignores circle records (001 L3483-3490)
             elif isinstance(record, Fini):
-                self.result.blocks.append(Block(Code.FINI, record.number))
+                self._text(Block(Code.FINI, record.number))
                 self.finished = True
-            elif isinstance(record, Comment | PartText):
+            elif isinstance(record, Comment | PartText | Surface | Other):
                 continue
             else:
                 kind = type(record).__name__.upper()
                 raise NotYetSupported(
                     f"{kind} record (type {_TYPE_NAMES.get(kind, kind)})", record.where
                 )
+            self._collect_notes(record)
         if not self.finished:
             self.warn(Diagnostic("NO FINI STATEMENT AT THE END OF THE CL FILE"))
+        self.result.blocks = self.output.emitted
         return self.result
+
+    def _collect_notes(self, record: Record) -> None:
+        notes = self.output.diagnostics
+        while notes:
+            note = notes.pop(0)
+            self.warn(Diagnostic(note.text, note.where or record.where))
+
+    def _motion_record(self, record: Motion) -> None:
+        if self.machine.number_option(1) != 0:
+            raise NotYetSupported(
+                f"motion on a positioning machine (option 1 = {self.machine.number_option(1):g})",
+                record.where,
+            )
+        if len(record.points[0]) == 6:
+            raise NotYetSupported("multiaxis motion", record.where)
+        self.motion.record(record)
+
+    def _arelem(self, record: Arelem) -> None:
+        tolerances = self.state.tolerances
+        if record.subtype == 4 and record.values:
+            tolerances.inside = record.values[0]
+        elif record.subtype == 5 and record.values:
+            tolerances.outside = record.values[0]
+        elif record.subtype == 6 and record.values:
+            # CUTRAD = D/2; a ball cutter when the corner radius is D/2 (001 L3589-3615)
+            tolerances.cutter_radius = record.values[0] / 2
+            corner = record.values[1] if len(record.values) > 1 else 0.0
+            tolerances.ball = abs(corner - tolerances.cutter_radius) < 1e-6
+
+    def _fedrat(self, statement: Statement) -> None:
+        """FEDRAT/f[,IPM] or FEDRAT/IPM,f (001 L31113-31212): the feed in IPM, clamped to
+        the machine's range (options 48 and 25); the command is made at output."""
+        numbers = [a for a in statement.args if not isinstance(a, Word)]
+        words = [a.name for a in statement.args if isinstance(a, Word)]
+        if len(numbers) != 1 or any(w != "IPM" for w in words):
+            unbuilt = [w for w in words if w != "IPM"] or ["with several values"]
+            raise NotYetSupported(f"FEDRAT/{unbuilt[0]}", statement.where)
+        feed = float(numbers[0])
+        if feed <= 0:
+            raise InputError(f"FEDRAT needs a positive feedrate, found {feed:g}", statement.where)
+        low, high = self.machine.number_option(48), self.machine.number_option(25)
+        used = min(max(feed, low), high)
+        if used != feed:
+            self.warn(
+                Diagnostic(
+                    f"FEEDRATE {feed:g} IPM IS OUTSIDE THE MACHINE RANGE {low:g}-{high:g}; "
+                    f"{used:g} IPM USED",
+                    statement.where,
+                )
+            )
+        self.state.feed.ipm = used
+        self.state.feed.programmed = feed
 
     def _partno(self, statement: Statement) -> None:
         text = statement.text or ""
         if not self.result.partno:
             self.result.partno = text
-        self.result.blocks.append(Block(Code.PARTNO, statement.number, text))
+        self._text(Block(Code.PARTNO, statement.number, text))
 
     def _pprint(self, statement: Statement) -> None:
-        self.result.blocks.append(Block(Code.PPRINT, statement.number, statement.text or ""))
+        self._text(Block(Code.PPRINT, statement.number, statement.text or ""))
 
     def _insert(self, statement: Statement) -> None:
-        self.result.blocks.append(Block(Code.INSERT, statement.number, statement.text or ""))
+        self._text(Block(Code.INSERT, statement.number, statement.text or ""))
 
     def _machin(self, statement: Statement) -> None:
         request = parse_machin(statement)
@@ -114,6 +206,12 @@ class Run:
             )
         changed, notes = apply_machin_options(self.machine, request)
         self.result.machine = changed
+        self.state.machine = changed
+        if changed is not self.machine or self._output is not None:
+            emitted = self.output.emitted
+            self._output = None
+            self._motion = None
+            self.output.emitted.extend(emitted)
         for note in notes:
             self.warn(note)
 

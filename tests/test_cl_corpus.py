@@ -236,10 +236,18 @@ def test_post_stops_at_units_on_creo_drilling(tmp_path: Path) -> None:
 
 @needs_corpus
 def test_post_reads_binary_cl(tmp_path: Path) -> None:
-    """A binary file goes through the same kernel: it stops at the same place as its text."""
-    tape = tmp_path / "t.tape"
-    result = CliRunner().invoke(main, ["post", str(APT4 / "test1.cl3"), "-o", str(tape)])
-    assert result.exit_code == 3
-    assert "test1.cl3: byte 272 (record 6, ISN 3)" in result.stderr
-    assert "not yet supported: ARELEM record (type 6000)" in result.stderr
-    assert not tape.exists()
+    """The APT IV binary file posts on the Standard Machine (MACHIN/MILL names another
+    postprocessor): FROM, then four feed moves; the tape equals the one its part program
+    gives, but for the N words, which are CL record numbers (2, 4, ... in APT IV files)."""
+    tapes = []
+    for source in (APT4 / "test1.cl3", APT4 / "test1.apt"):
+        tape = tmp_path / f"{source.suffix[1:]}.tape"
+        listing = tmp_path / f"{source.suffix[1:]}.lis"
+        result = CliRunner().invoke(
+            main, ["post", str(source), "-o", str(tape), "--listing", str(listing)]
+        )
+        assert result.exit_code == 0, result.stderr
+        assert "MACHIN/MILL names another postprocessor; ignored" in result.stderr
+        tapes.append(tape.read_text())
+    assert tapes[0] == "TEST1\nN012G01X+1Z-1F071\nN014Y+1F100\nN016X-1\nN018Y-1\n"
+    assert tapes[1] == "TEST1\nN006G01X+1Z-1F071\nN007Y+1F100\nN008X-1\nN009Y-1\n"

@@ -3,8 +3,13 @@
 from __future__ import annotations
 
 import pytest
+from gecent.core.errors import FatalError
+from gecent.core.machine.definition import MachineDefinition
+from gecent.core.machine.loader import load_machine_text, standard_machine
+from gecent.core.motion.gcode import LinearCodes
 from gecent.core.motion.rounding import round_to_step, to_steps
 from gecent.core.motion.segments import segment_count, segments
+from gecent.core.plugins import get_plugins
 from hypothesis import given
 from hypothesis import strategies as st
 
@@ -84,3 +89,37 @@ def test_segments_lose_no_pulse_and_stay_on_the_path(move: list[int], limit: int
             assert abs(step) <= limit
             running[axis] += step
             assert abs(running[axis] - move[axis] * index / count) <= 0.5001 + 1e-6
+
+
+def _machine_with(tableg: dict[int, int], **options: float) -> MachineDefinition:
+    text = '[machine]\nnumber = 88\nname = "selg"\ntitle = "SELG TEST"\n[tableg]\n' + "".join(
+        f"{k} = {v}\n" for k, v in tableg.items()
+    )
+    if options:
+        text += "[optab]\n" + "".join(f"{k[1:]} = {v}\n" for k, v in options.items())
+    return load_machine_text(text, "selg-test.toml")
+
+
+def test_w21_linear_g_selection_all_codes_available() -> None:
+    """W21 (001 L6019-6036): with every dimension code present, Ex. 1 (0.2, 2, 20) takes
+    TABLEG(11), GDIMUL 100; Ex. 2 (-0.001, 0, 0) TABLEG(13), GDIMUL 0.1; 8 -> (2), 80 -> (11)."""
+    machine = _machine_with({11: 10, 12: 11, 13: 12, 14: 13, 15: 14}, o4=99.9999)
+    codes = LinearCodes(machine, STEP)
+    assert (codes.select(200000).location, codes.select(200000).gdimul) == (11, 100.0)
+    assert (codes.select(10).location, codes.select(10).gdimul) == (13, 0.1)
+    assert codes.select(80000).location == 2
+    assert codes.select(800000).location == 11
+    assert codes.select(99999).location == 2  # 9.9999 is still under 10
+    assert codes.select(100000).location == 11
+
+
+def test_selg_skips_absent_codes_upward_and_fails_past_the_last() -> None:
+    standard = LinearCodes(standard_machine(), STEP)
+    first = standard.select(10)
+    assert (first.code, first.location, first.gdimul) == (1, 2, 10.0)  # only G01 on the standard
+    with pytest.raises(FatalError) as caught:
+        standard.select(100000)  # 10.0 > option 4 = 9.9999: should have been segmented
+    assert caught.value.number == 139
+    mach23 = LinearCodes(get_plugins().machine("mach23").load(), STEP)
+    assert (mach23.select(5000).code, mach23.select(5000).gdimul) == (11, 1.0)
+    assert mach23.select(500000).code == 10

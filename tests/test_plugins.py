@@ -49,3 +49,21 @@ def test_duplicate_registration_keeps_the_first() -> None:
         "gecent.plugins.machines.mach23", "gecent.plugins.machines.mach23"
     )
     assert len(plugins.machines()) == 1
+
+
+def test_every_package_folder_is_listed_in_pyproject() -> None:
+    """A folder missing from [tool.setuptools] packages installs fine in editable mode and
+    breaks every non-editable install: keep the list complete."""
+    import tomllib
+
+    from .conftest import ROOT
+
+    listed = set(
+        tomllib.loads((ROOT / "pyproject.toml").read_text())["tool"]["setuptools"]["packages"]
+    )
+    found = {
+        "gecent." + ".".join(path.parent.relative_to(ROOT).parts)
+        for top in ("core", "plugins")
+        for path in (ROOT / top).rglob("__init__.py")
+    }
+    assert found <= listed, f"add to pyproject packages: {sorted(found - listed)}"

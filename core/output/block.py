@@ -69,6 +69,13 @@ class Block:
     record: int | None = None
     text: str | None = None
     cells: list[float | Absent] = field(default_factory=lambda: [ABSENT] * (CELLS + 1))
+    # the machine point reached (steps, CL axis order) and the departures in steps, for the
+    # absolute printout and for checking a tape against its CL points
+    position: tuple[int, ...] | None = None
+    steps: tuple[int, ...] | None = None
+    # set by the output element: the printed value of each register output, and the tape line
+    words: tuple[tuple[int, str], ...] = ()
+    punch: str | None = None
 
     @property
     def punched(self) -> bool:

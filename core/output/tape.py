@@ -18,6 +18,8 @@ def tape_lines(blocks: Iterable[Block]) -> list[str]:
         if block.code in TEXT_CODES:
             # Text blocks are already BCD: punched as written (blanks are never punched).
             lines.append((block.text or "").replace(" ", ""))
+        elif block.punch is not None:
+            lines.append(block.punch)
         else:
             raise NotYetSupported(f"punching a CODE {int(block.code)} block ({block.code.name})")
     return lines

@@ -10,27 +10,83 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from gecent.core.absent import ABSENT
+from gecent.core.errors import NotYetSupported
 from gecent.core.hookspecs import Register, hookimpl
 from gecent.core.listing import environment
 from gecent.core.machine.definition import MachineDefinition
-from gecent.core.output.block import TEXT_CODES, Block
+from gecent.core.output.block import TEXT_CODES, Block, Code
+from gecent.core.output.format import NO_DECIMAL_POINT
 from gecent.core.output.tape import tape_feet, tape_lines
 
 ABSOLUTE_AXES = ((3, "X"), (4, "Y"), (5, "Z"), (6, "A"), (7, "B"), (18, "C"))
+FIRST_COLUMN = 3  # column 2 holds the OPSKIP "/" (001 L16394-16397)
+GAP = 2
+
+
+@dataclass(frozen=True, slots=True)
+class Column:
+    key: str  # a register location ("3"), "ABS-3", "F-IPM", "S-RPM" or "CLREC"
+    heading: str
+    width: int
+    start: int = 0
+
+
+def _format_width(machine: MachineDefinition, location: int) -> int:
+    fmt = machine.registers.formats[location]
+    assert fmt is not None
+    point = 1 if fmt.right and location not in NO_DECIMAL_POINT else 0
+    return (1 if fmt.signed else 0) + fmt.left + point + fmt.right
+
+
+def columns(machine: MachineDefinition) -> list[Column]:
+    """The line layout: incremental registers in output order, then the absolute (or
+    operator) axes, F-IPM, S-RPM and, with option 143 != 0, the CL record number (CALCP1,
+    001 L9478-9582). Fields are two blanks apart from column 3; a field is as wide as its
+    format or its heading, whichever is wider."""
+    registers = machine.registers
+    order = [k for k in (machine.output_order or range(1, 31)) if k not in (15, 19, 20)]
+    wanted: list[Column] = [
+        Column(str(k), registers.letters[k], _format_width(machine, k))
+        for k in order
+        if registers.formats[k] is not None
+    ]
+    prefix = "OPR" if machine.number_option(172) == 1 else "ABS"
+    for location, letter in ABSOLUTE_AXES:
+        fmt = registers.formats[location]
+        if fmt is not None:
+            # the absolute columns are widened to 4 integer digits (001 L8936-8965)
+            wanted.append(Column(f"ABS-{location}", f"{prefix}-{letter}", 2 + 4 + fmt.right))
+    wanted.append(Column("F-IPM", "F-MPM" if machine.number_option(138) == 1 else "F-IPM", 9))
+    wanted.append(Column("S-RPM", "S-RPM", 7))
+    if machine.number_option(143) != 0:
+        wanted.append(Column("CLREC", "CLREC", 5))
+    placed: list[Column] = []
+    at = FIRST_COLUMN
+    for column in wanted:
+        width = max(column.width, len(column.heading))
+        placed.append(Column(column.key, column.heading, width, at))
+        at += width + GAP
+    return placed
 
 
 def heading(machine: MachineDefinition) -> str:
-    registers = machine.registers
-    words = [registers.letters[i] for i in registers.present() if i not in (15, 19, 20)]
-    prefix = "OPR" if machine.number_option(172) == 1 else "ABS"
-    words += [
-        f"{prefix}-{letter}" for i, letter in ABSOLUTE_AXES if registers.formats[i] is not None
-    ]
-    words.append("F-MPM" if machine.number_option(138) == 1 else "F-IPM")
-    words.append("S-RPM")
-    if machine.number_option(143) == 0:
-        words.append("CLREC")
-    return " ".join(words)
+    return _place([(c, c.heading) for c in columns(machine)])
+
+
+def _place(fields: list[tuple[Column, str]]) -> str:
+    line = ""
+    for column, text in fields:
+        end = column.start - 1 + column.width
+        line = line.ljust(end - len(text)) + text
+    return line.rstrip()
+
+
+def _absolute(value: float, decimals: int) -> str:
+    return f"{value:+.{decimals}f}"
+
+
+PRINTABLE = frozenset({Code.FROM, Code.LINEAR})
 
 
 @dataclass(frozen=True)
@@ -40,10 +96,36 @@ class Geout1:
     section: str = "§3.5.4"
     template: str = "geout1.j2"
 
-    def line(self, block: Block) -> str:
+    def line(self, machine: MachineDefinition, layout: list[Column], block: Block) -> str:
         if block.code in TEXT_CODES:
             return block.text or ""
-        raise ValueError(f"GEOUT1 cannot print a CODE {int(block.code)} block yet")
+        if block.code not in PRINTABLE:
+            raise NotYetSupported(f"GEOUT1 line for a CODE {int(block.code)} block")
+        step = machine.number_option(14)
+        printed = dict(block.words)
+        fields: list[tuple[Column, str]] = []
+        for column in layout:
+            key = column.key
+            if key.isdigit() and block.code is not Code.FROM:
+                text = printed.get(int(key))
+                if text is not None:
+                    fields.append((column, text))
+            elif key.startswith("ABS-") and block.position is not None:
+                axis = int(key[4:]) - 3
+                fmt = machine.registers.formats[int(key[4:])]
+                if 0 <= axis < len(block.position) and fmt is not None:
+                    value = block.position[axis] * step
+                    fields.append((column, _absolute(value, fmt.right)))
+            elif key == "F-IPM" and block.cells[19] is not ABSENT:
+                fields.append((column, f"{float(block.cells[19]):.3f}".rstrip("0")))
+            elif key == "CLREC" and block.record is not None:
+                fields.append((column, str(block.record)))
+        text = _place(fields)
+        if block.code is Code.FROM:
+            text = "FROM" + text[4:]
+        if block.punch is not None and block.punch.startswith("/"):
+            text = text[:1] + "/" + text[2:]
+        return text
 
     def render(
         self,
@@ -53,7 +135,8 @@ class Geout1:
         cut_minutes: float = 0.0,
         dwell_minutes: float = 0.0,
     ) -> str:
-        lines = [self.line(block) for block in blocks if block.printed]
+        layout = columns(machine)
+        lines = [self.line(machine, layout, block) for block in blocks if block.printed]
         per_page = max(1, int(machine.number_option(79)))
         pages = [
             {"number": n + 1, "lines": lines[start : start + per_page]}

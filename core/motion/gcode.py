@@ -1,0 +1,55 @@
+"""Selecting the dimension G code of a linear move (SELG, manual §3.4.6, 001 L5836-6036).
+
+The control reads a departure in the range its G code announces, so the block's G code must
+cover the largest departure: the smallest available range that does. GDIMUL is that range's
+dimension multiplier times ten (001 L5946-5957), used later by the feedrate number.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from gecent.core.absent import ABSENT
+from gecent.core.errors import FatalError
+from gecent.core.machine.definition import MachineDefinition
+
+# (TABLEG location, GDIMUL) in order of range, smallest first (001 L6001-6013)
+LINEAR_RANGES = ((13, 0.1), (12, 1.0), (2, 10.0), (11, 100.0), (14, 1000.0), (15, 10000.0))
+INCH_LIMITS = (0.1, 1.0, 10.0, 100.0, 1000.0)  # RNGDEP, option 138 = 0 (001 L5885-5897)
+METRIC_LIMITS = (1.0, 10.0, 100.0, 1000.0)  # option 138 = 1; the fifth is option 4
+
+
+@dataclass(frozen=True, slots=True)
+class DimensionCode:
+    code: int  # the G code number (TABLEG value)
+    location: int  # its TABLEG location
+    gdimul: float
+
+
+class LinearCodes:
+    """SELG for one machine: the departure limits in steps and the available codes."""
+
+    def __init__(self, machine: MachineDefinition, step: float) -> None:
+        metric = machine.number_option(138) == 1
+        limits = (*METRIC_LIMITS, machine.number_option(4)) if metric else INCH_LIMITS
+        # RNGDEP in steps: a departure of d steps is in range i when d < limit_i / STEP
+        self.limits = tuple(limit / step for limit in limits)
+        self.depmax = round(machine.number_option(4) / step)
+        codes: list[DimensionCode | None] = []
+        for location, gdimul in LINEAR_RANGES:
+            value = machine.tableg[location]
+            codes.append(None if value is ABSENT else DimensionCode(int(value), location, gdimul))
+        self.codes = tuple(codes)
+
+    def select(self, largest_steps: int) -> DimensionCode:
+        """The code for a block whose largest |departure| is ``largest_steps`` steps."""
+        if largest_steps > self.depmax:
+            raise FatalError(139, f"departure of {largest_steps} steps exceeds option 4")
+        index = next(
+            (i for i, limit in enumerate(self.limits) if largest_steps < limit),
+            len(self.limits),
+        )
+        for code in self.codes[index:]:
+            if code is not None:
+                return code
+        raise FatalError(138, f"no TABLEG code covers a departure of {largest_steps} steps")

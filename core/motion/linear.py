@@ -1,0 +1,97 @@
+"""Linear motion on a contouring machine (manual §3.4.2-3.4.3, 001 L4061-4673; flow charts
+5 and 7): FROM, GOTO, GODLTA and continuation records become CODE 3 and CODE 0 blocks.
+
+* each CL point plus TRANS is rounded to whole steps (SRAREC); departures are differences of
+  rounded points, so no error accumulates (appendix 7.2);
+* a move of no whole step is no move: nothing is output and the previous point stays;
+* a departure beyond DEPMAX (option 4) is segmented (core/motion/segments.py);
+* the motion element works in CL axis order; options 59/60 are applied at output (SHUFFL).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+from gecent.core.cl.records import Motion, MotionSubtype
+from gecent.core.errors import InputError
+from gecent.core.motion.rounding import to_steps
+from gecent.core.motion.segments import segment_count, segments
+from gecent.core.output.block import Block, Code
+from gecent.core.state import PostState
+
+TWO_AXIS = frozenset({11.0, 101.0, 110.0})  # option 22: the machine has two linear axes
+
+
+class LinearMotion:
+    """The motion element for a non-multiaxis contouring machine."""
+
+    def __init__(self, state: PostState, emit: Callable[[Block], None]) -> None:
+        machine = state.machine
+        self.state = state
+        self.emit = emit
+        self.step = machine.number_option(14)
+        # CL x, y (two-axis machines such as the lathe MACH04) or x, y, z (001 L1318-1320)
+        self.axes = 2 if machine.number_option(22) in TWO_AXIS else 3
+        self.depmax = round(machine.number_option(4) / self.step)
+
+    def record(self, record: Motion) -> None:
+        if record.subtype is MotionSubtype.FROM:
+            self._from(record)
+        elif record.subtype is MotionSubtype.GODLTA:
+            self._godlta(record)
+        else:
+            for point in record.points:
+                self._goto(record, point)
+
+    def _machine_point(self, part: list[float]) -> list[int]:
+        return [to_steps(part[axis], self.step) for axis in range(3)]
+
+    def _from(self, record: Motion) -> None:
+        position = self.state.position
+        tx, ty, tz = position.translation
+        x, y, z = record.points[0][:3]
+        position.present_part[:3] = [x + tx, y + ty, z + tz]
+        position.present[:3] = self._machine_point(position.present_part)
+        block = Block(Code.FROM, record.number)
+        for axis in range(3):
+            block.cells[3 + axis] = position.present[axis] * self.step
+        block.position = tuple(position.present[:3])
+        position.previous_part[:] = position.present_part
+        position.previous[:] = position.present
+        position.from_given = True
+        self.emit(block)
+
+    def _godlta(self, record: Motion) -> None:
+        """GODLTA adds its increments to the previous point (001 L4103-4128); TRANS is in the
+        previous point already. One value moves along the tool axis (z)."""
+        values = record.points[0]
+        delta = (0.0, 0.0, values[0]) if len(values) == 1 else values[:3]
+        previous = self.state.position.previous_part
+        tx, ty, tz = self.state.position.translation
+        point = tuple(previous[axis] + delta[axis] - (tx, ty, tz)[axis] for axis in range(3))
+        self._goto(record, point)
+
+    def _goto(self, record: Motion, point: tuple[float, ...]) -> None:
+        if len(point) != 3:
+            raise InputError(
+                "a multiaxis (6-value) point on a 3-axis contouring machine", record.where
+            )
+        position = self.state.position
+        tx, ty, tz = position.translation
+        position.present_part[:3] = [point[0] + tx, point[1] + ty, point[2] + tz]
+        position.present[:3] = self._machine_point(position.present_part)
+        departures = [position.present[a] - position.previous[a] for a in range(self.axes)]
+        if not any(departures):
+            return  # RETURN = -1: no move, the previous point stays (001 L4283-4290)
+        count = segment_count(departures, [self.depmax] * self.axes)
+        reached = list(position.previous[:3])
+        for part in segments(departures, count) if count > 1 else (tuple(departures),):
+            block = Block(Code.LINEAR, record.number)
+            for axis, steps in enumerate(part):
+                block.cells[3 + axis] = steps * self.step
+                reached[axis] += steps
+            block.position = tuple(reached)
+            block.steps = part
+            self.emit(block)
+        position.previous_part[:] = position.present_part
+        position.previous[:] = position.present

@@ -1,0 +1,124 @@
+"""Finishing and emitting command blocks on a single-head contouring machine (OUTPUT and the
+GEOUT conversion: manual §3.5, flow charts 8 and 12, 001 L19737-19848, L20074-20192).
+
+OUTPUT completes a block: the CODE, the sequence number (negative under OPSKIP), for motion
+the dimension G code (SELG) and the feed (FEDIPM, or a rapid marker), then the pending spindle
+command and M code, which ride in the next block output. The conversion then turns the feed
+into the control's command (CONTUR, core/feed/contour.py) and formats each register.
+"""
+
+from __future__ import annotations
+
+from gecent.core.absent import ABSENT, Absent
+from gecent.core.errors import Diagnostic, NotYetSupported
+from gecent.core.feed.contour import FeedCommand
+from gecent.core.motion.gcode import LinearCodes
+from gecent.core.output.block import Block, Code
+from gecent.core.output.format import RegisterFormatter
+from gecent.core.state import PostState
+
+MOTION_CODES = frozenset({Code.LINEAR})
+NEVER_OUTPUT = frozenset({15, 19, 20})  # CODE, feed in IPM, speed in RPM: not registers
+ZERO_RULE_CELLS = frozenset({3, 4, 5, 6, 7, 8, 9, 10, 16})  # option 51 (001 L25024-25049)
+
+
+class OutputElement:
+    def __init__(self, state: PostState) -> None:
+        machine = state.machine
+        self.state = state
+        self.step = machine.number_option(14)
+        self.linear_codes = LinearCodes(machine, self.step)
+        self.feed = FeedCommand(machine)
+        registers = machine.registers
+        contouring = machine.number_option(1) == 0
+        order = [k for k in (machine.output_order or ()) if k not in NEVER_OUTPUT] or [
+            k for k in range(1, 31) if k not in NEVER_OUTPUT
+        ]
+        self.formatters: list[RegisterFormatter] = []
+        for location in order:
+            fmt = registers.formats[location]
+            if fmt is None:
+                continue
+            drop = contouring or location not in (3, 4, 5)
+            self.formatters.append(
+                RegisterFormatter(location, registers.letters[location], fmt, drop_trailing=drop)
+            )
+        self.zero_rule = machine.number_option(51)
+        self.suppress_g = machine.number_option(38) == 0
+        self.suppress_f = machine.number_option(107) in (1.0, 2.0)
+        self.previous_g: float | Absent = ABSENT
+        self.previous_f: float | Absent = ABSENT
+        self.emitted: list[Block] = []
+        self.diagnostics: list[Diagnostic] = []
+        self._assumed_feed = False
+
+    # -- OUTPUT (flow chart 8) ------------------------------------------------------------
+
+    def output(self, block: Block) -> None:
+        state = self.state
+        block.cells[15] = float(int(block.code))
+        sequence = block.record if block.record is not None else state.sequence
+        block.cells[1] = float(-sequence if state.skipping else sequence)
+        if block.code in MOTION_CODES:
+            self._motion(block)
+        block.cells[12] = state.pending.spindle
+        block.cells[14] = state.pending.m_code
+        state.pending.spindle = ABSENT
+        state.pending.m_code = ABSENT
+        self._emit(block)
+
+    def _motion(self, block: Block) -> None:
+        assert block.steps is not None
+        code = self.linear_codes.select(max(abs(s) for s in block.steps))
+        block.cells[2] = float(code.code)
+        feed = self.state.feed
+        if feed.rapid_ipm:
+            raise NotYetSupported("rapid traverse on a contouring machine (RAPID)")
+        if feed.programmed is None and not self._assumed_feed:
+            self._assumed_feed = True
+            self.diagnostics.append(Diagnostic("OPTION FEEDRATE ASSUMED."))
+            feed.ipm = self.state.machine.number_option(23)
+        length = sum((s * self.step) ** 2 for s in block.steps) ** 0.5
+        command, ipm = self.feed.linear(feed.ipm, code.gdimul, length)
+        block.cells[11] = command
+        block.cells[19] = ipm
+
+    # -- GEOUT: words and the tape line (flow chart 12) ----------------------------------
+
+    def _emit(self, block: Block) -> None:
+        words = self._words(block, suppress=block.code in MOTION_CODES)
+        block.words = tuple((location, printed) for location, _, printed, _ in words)
+        if block.punched:
+            punch = "".join(letter + punched for _, letter, _, punched in words)
+            skip = block.cells[1] is not ABSENT and float(block.cells[1]) < 0
+            block.punch = "/" + punch if skip else punch
+        self.emitted.append(block)
+
+    def _words(self, block: Block, *, suppress: bool) -> list[tuple[int, str, str, str]]:
+        """(location, letter, printed, punched) of each register the block outputs."""
+        words: list[tuple[int, str, str, str]] = []
+        for formatter in self.formatters:
+            location = formatter.location
+            value = block.cells[location]
+            if value is ABSENT:
+                continue
+            number = float(value)
+            if location == 1:
+                number = abs(number)
+            if suppress and location == 2:
+                if self.suppress_g and number == self.previous_g:
+                    continue
+                self.previous_g = number
+            if suppress and location == 11:
+                if self.suppress_f and number == self.previous_f:
+                    continue
+                self.previous_f = number
+            text = formatter.format(number)
+            if location in ZERO_RULE_CELLS and text.punched.strip("+-0") == "":
+                if self.zero_rule == 0:  # delete value and address (standard)
+                    continue
+                if self.zero_rule == 1:  # the address alone
+                    words.append((location, formatter.letter, text.printed, ""))
+                    continue
+            words.append((location, formatter.letter, text.printed, text.punched))
+        return words

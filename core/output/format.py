@@ -1,0 +1,70 @@
+"""Register formatting: a cell value to its printed and punched text (CONBCD, manual §3.5.1-
+3.5.2, 001 L853-975, L8838-8925, L16289-16290; REGFOR §5.6.4, 001 L23965-24066).
+
+* ±(10·L + R): L digits before the decimal point, R after; negative REGFOR = the sign is
+  output. Leading zeros are kept to L digits (``-03.2468``, ``G04X04``, ``F0015``).
+* Trailing zeros are dropped on incremental (contouring) systems (001 L16289-16290) and kept
+  on positioning machines' X, Y and Z (001 L8918-8921); a dropped zero prints as a blank.
+* The printed decimal point appears when R > 0 and the location is not NDP (001 L24057-24062);
+  blanks and periods are never punched (001 L889-890, L8849).
+* A signed register shows ``+`` for a positive value, as the manual's computer-printed sample
+  does (001 L10341-10355).
+
+Each register's formatter is built once per machine, so the hot loop only quantises and joins.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from decimal import ROUND_HALF_UP, Decimal
+
+from gecent.core.errors import GecentError
+from gecent.core.machine.regformat import RegisterFormat
+
+NO_DECIMAL_POINT = frozenset({1, 2, 12, 13, 14, 17})  # NDP locations (001 L24057-24062)
+
+
+class FormatOverflow(GecentError):
+    """A value too large for its register format: an internal fault, since motion is
+    segmented to DEPMAX and N wraps at SEQLIM before formatting."""
+
+    def __init__(self, letter: str, value: float, fmt: RegisterFormat) -> None:
+        super().__init__(f"{letter}{value} does not fit register format {fmt}")
+
+
+@dataclass(frozen=True, slots=True)
+class Formatted:
+    printed: str
+    punched: str
+
+
+class RegisterFormatter:
+    """Formats values of one register (one REGSTR/REGFOR location)."""
+
+    __slots__ = ("drop_trailing", "fmt", "letter", "location", "point", "quantum")
+
+    def __init__(
+        self, location: int, letter: str, fmt: RegisterFormat, *, drop_trailing: bool
+    ) -> None:
+        self.location = location
+        self.letter = letter
+        self.fmt = fmt
+        self.drop_trailing = drop_trailing and fmt.right > 0
+        self.point = fmt.right > 0 and location not in NO_DECIMAL_POINT
+        self.quantum = Decimal(1).scaleb(-fmt.right)
+
+    def format(self, value: float) -> Formatted:
+        fmt = self.fmt
+        quantised = Decimal(repr(abs(value))).quantize(self.quantum, ROUND_HALF_UP)
+        whole, _, fraction = f"{quantised:.{fmt.right}f}".partition(".")
+        whole = whole.lstrip("0")
+        if len(whole) > fmt.left:
+            raise FormatOverflow(self.letter, value, fmt)
+        whole = whole.rjust(fmt.left, "0")
+        shown = fraction.rstrip("0").ljust(fmt.right) if self.drop_trailing else fraction
+        sign = ("-" if value < 0 and quantised else "+") if fmt.signed else ""
+        printed = sign + whole + ("." if self.point else "") + shown
+        punched = (sign + whole + shown).replace(" ", "")
+        if punched.strip("+-") == "":
+            punched = sign + "0"
+        return Formatted(printed, punched)

@@ -1,0 +1,65 @@
+"""The run state (the manual's labeled COMMON, §5.1.1), grouped by concern.
+
+Slotted dataclasses, so the hot loop reads attributes, not dictionaries. Machine positions
+are whole numbers of steps (see core/motion/rounding.py).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from gecent.core.absent import ABSENT, Absent
+from gecent.core.machine.definition import MachineDefinition
+
+
+@dataclass(slots=True)
+class Position:
+    """DPRESP/DPREVP (part, with TRANS) and DPRESM/DPREVM (machine, in steps)."""
+
+    present_part: list[float] = field(default_factory=lambda: [0.0] * 6)
+    previous_part: list[float] = field(default_factory=lambda: [0.0] * 6)
+    present: list[int] = field(default_factory=lambda: [0] * 6)
+    previous: list[int] = field(default_factory=lambda: [0] * 6)
+    translation: tuple[float, float, float] = (0.0, 0.0, 0.0)
+    from_given: bool = False
+
+
+@dataclass(slots=True)
+class Feed:
+    """FEDIPM, FDHOLD, FRMOD and the rapid flags RAPFLG, FLRPON, FRAPID (001 L17011-18104)."""
+
+    ipm: float = 0.0
+    programmed: float | None = None
+    per_revolution: bool = False
+    rapid_requested: bool = False
+    rapid_mode: int = 0  # FLRPON: 0 off, +1 one-shot, -1 modal
+    rapid_ipm: float = 0.0  # FRAPID: 0 = not rapid
+
+
+@dataclass(slots=True)
+class Pending:
+    """What rides along in the next block OUTPUT emits: SPNCOM and VALUEM."""
+
+    spindle: float | Absent = ABSENT
+    m_code: float | Absent = ABSENT
+
+
+@dataclass(slots=True)
+class Tolerances:
+    """TOLIN, TOLOUT, CUTRAD and the ball-cutter flag (type 6000 records, 001 L3544-3615)."""
+
+    inside: float = 0.0
+    outside: float = 0.0
+    cutter_radius: float = 0.0
+    ball: bool = False
+
+
+@dataclass(slots=True)
+class PostState:
+    machine: MachineDefinition
+    position: Position = field(default_factory=Position)
+    feed: Feed = field(default_factory=Feed)
+    pending: Pending = field(default_factory=Pending)
+    tolerances: Tolerances = field(default_factory=Tolerances)
+    sequence: int = 0  # SEQCTR: the CL record number of the record being processed
+    skipping: bool = False  # SKPFLG (OPSKIP)
