@@ -23,6 +23,7 @@ from gecent.core.families import FAMILIES, MachinePack
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.machine.describe import describe_machine, machine_as_dict
 from gecent.core.output.files import write_atomically
+from gecent.core.output.punch import punch
 from gecent.core.output.tape import tape_image
 from gecent.core.plugins import PluginSet, get_plugins
 from gecent.core.run import post as run_post
@@ -197,9 +198,21 @@ def machine_show(key: str, show_all: bool, as_json: bool) -> None:
     type=click.Path(dir_okay=False),
     help="Printed listing file (default: INPUT with .lis).",
 )
+@click.option(
+    "--punch",
+    "punch_to",
+    nargs=2,
+    type=(click.Choice(["eia", "ascii"]), click.Path(dir_okay=False)),
+    metavar="CODE FILE",
+    help="Also write the punched tape, one byte per frame, in EIA RS-244 or ASCII RS-358 code.",
+)
 @_reporting_errors
 def post(
-    input_path: str, machine_key: str | None, tape_path: str | None, listing_path: str | None
+    input_path: str,
+    machine_key: str | None,
+    tape_path: str | None,
+    listing_path: str | None,
+    punch_to: tuple[str, str] | None,
 ) -> None:
     """Postprocess a CL file into a tape image and a printed listing."""
     plugins = _plugins()
@@ -213,9 +226,12 @@ def post(
         raise NotYetSupported(f"printout GEOUT{layout} (option 164 = {layout})")
     listing = printout.render(result.machine, result.blocks, result.partno)
     tape = tape_image(result.blocks)
+    frames = punch(tape.splitlines(), punch_to[0]) if punch_to else None
     stem = Path(input_path)
     write_atomically(tape_path or stem.with_suffix(".tape"), tape.encode("ascii", "replace"))
     write_atomically(listing_path or stem.with_suffix(".lis"), listing.encode("utf-8"))
+    if punch_to and frames is not None:
+        write_atomically(punch_to[1], frames)
     for diagnostic in result.diagnostics:
         click.echo(str(diagnostic), err=True)
 

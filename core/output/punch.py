@@ -1,0 +1,66 @@
+"""The punched tape: tape image lines to frames in EIA RS-244 or ASCII RS-358 code
+(manual §3.5.3, appendix 7.6-7.7, 001 L8822-8854, L40712-41022).
+
+One byte per frame, bit 0 = channel 1 ... bit 7 = channel 8, parity included (EIA odd in
+channel 5, ASCII even in channel 8). Blanks and periods are never punched (001 L8849); each
+block ends with the end-of-block code (option 67: EIA channel 8, ASCII LF).
+"""
+
+from __future__ import annotations
+
+import tomllib
+from collections.abc import Iterable
+from functools import cache
+from importlib import resources
+
+from gecent.core.errors import InputError
+
+CODES = ("eia", "ascii")
+NOT_PUNCHED = " ."
+
+
+@cache
+def table(code: str) -> dict[str, int]:
+    raw = resources.files("gecent.core.output").joinpath("data", "tape_codes.toml").read_bytes()
+    return {str(k): int(v) for k, v in tomllib.loads(raw.decode("utf-8"))[code].items()}
+
+
+def punch(lines: Iterable[str], code: str) -> bytes:
+    """The frames of a tape image; a character the code cannot punch is an error naming it."""
+    if code not in CODES:
+        raise InputError(f"unknown tape code {code!r} (eia or ascii)")
+    codes = table(code)
+    end_of_block = codes["EOB"]
+    frames = bytearray()
+    for number, line in enumerate(lines, start=1):
+        for character in line:
+            if character in NOT_PUNCHED:
+                continue
+            frame = codes.get(character)
+            if frame is None:
+                raise InputError(
+                    f"tape block {number} ({line!r}): {character!r} has no {code.upper()} code"
+                )
+            frames.append(frame)
+        frames.append(end_of_block)
+    return bytes(frames)
+
+
+def unpunch(frames: bytes, code: str) -> list[str]:
+    """Read frames back into tape image lines (for tests and for checking a tape)."""
+    codes = table(code)
+    characters = {v: k for k, v in reversed(list(codes.items())) if len(k) == 1}
+    end_of_block = codes["EOB"]
+    lines: list[str] = []
+    current: list[str] = []
+    for frame in frames:
+        if frame == end_of_block:
+            lines.append("".join(current))
+            current = []
+        elif frame in characters:
+            current.append(characters[frame])
+        else:
+            raise ValueError(f"frame {frame:#04x} is not a {code.upper()} character")
+    if current:
+        raise ValueError("the tape ends inside a block (no end-of-block code)")
+    return lines
