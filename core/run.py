@@ -16,6 +16,7 @@ from gecent.core.cl.records import (
     Comment,
     Fini,
     Motion,
+    MotionSubtype,
     Other,
     PartText,
     Record,
@@ -32,6 +33,7 @@ from gecent.core.machine.selection import (
     parse_machin,
     resolve_machine,
 )
+from gecent.core.motion.circle import CircularMotion
 from gecent.core.motion.linear import LinearMotion
 from gecent.core.output.block import Block, Code
 from gecent.core.output.element import OutputElement
@@ -57,6 +59,7 @@ class Run:
         self.finished = False
         self._output: OutputElement | None = None
         self._motion: LinearMotion | None = None
+        self._circle: CircularMotion | None = None
         self._statements: dict[str, Callable[[Statement], None]] = {
             "PARTNO": self._partno,
             "PPRINT": self._pprint,
@@ -81,6 +84,12 @@ class Run:
             self._motion = LinearMotion(self.state, self.output.output)
         return self._motion
 
+    @property
+    def circle(self) -> CircularMotion:
+        if self._circle is None:
+            self._circle = CircularMotion(self.state, self.output.output, self.warn)
+        return self._circle
+
     def warn(self, diagnostic: Diagnostic) -> None:
         self.result.diagnostics.append(diagnostic)
         self._text(
@@ -99,6 +108,11 @@ class Run:
             if self.finished:
                 raise InputError("record after FINI", record.where)
             self.state.sequence = record.number
+            if self._circle is not None and self._circle.collecting:
+                if isinstance(record, Motion) and record.subtype is MotionSubtype.CONTINUATION:
+                    self._circle.add(record)
+                    continue
+                self._circle.finish()  # any other record ends the circle (001 L4749-4781)
             if isinstance(record, Motion):
                 self._motion_record(record)
             elif isinstance(record, Statement):
@@ -109,9 +123,7 @@ class Run:
             elif isinstance(record, Arelem):
                 self._arelem(record)
             elif isinstance(record, Circle):
-                if self.machine.number_option(9) == 1:
-                    raise NotYetSupported("circular interpolation (CIRCLE record)", record.where)
-                # a linear-only control ignores circle records (001 L3483-3490)
+                self.circle.surface(record)  # ignored on a linear-only control (option 9 = 0)
             elif isinstance(record, Fini):
                 self._text(Block(Code.FINI, record.number))
                 self.finished = True
@@ -123,6 +135,8 @@ class Run:
                     f"{kind} record (type {_TYPE_NAMES.get(kind, kind)})", record.where
                 )
             self._collect_notes(record)
+        if self._circle is not None and self._circle.collecting:
+            self._circle.finish()
         if not self.finished:
             self.warn(Diagnostic("NO FINI STATEMENT AT THE END OF THE CL FILE"))
         self.result.blocks = self.output.emitted
@@ -142,6 +156,8 @@ class Run:
             )
         if len(record.points[0]) == 6:
             raise NotYetSupported("multiaxis motion", record.where)
+        if self.circle.begin(record):
+            return
         self.motion.record(record)
 
     def _arelem(self, record: Arelem) -> None:
@@ -211,6 +227,7 @@ class Run:
             emitted = self.output.emitted
             self._output = None
             self._motion = None
+            self._circle = None
             self.output.emitted.extend(emitted)
         for note in notes:
             self.warn(note)

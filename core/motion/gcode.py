@@ -53,3 +53,43 @@ class LinearCodes:
             if code is not None:
                 return code
         raise FatalError(138, f"no TABLEG code covers a departure of {largest_steps} steps")
+
+
+# (CLW location, CCLW location, GDIMUL) per radius band (SELGCR, 001 L6076-6170)
+CIRCULAR_RANGES = (
+    (23, 33, 0.1),
+    (22, 32, 1.0),
+    (3, 4, 10.0),
+    (21, 31, 100.0),
+    (44, 45, 1000.0),
+    (49, 50, 10000.0),
+)
+
+
+class CircularCodes:
+    """SELGCR: the circular G code for the radius band and direction, skipping absent codes
+    upward as SELG does; fatal 142 beyond option 4, fatal 144 with no code."""
+
+    def __init__(self, machine: MachineDefinition) -> None:
+        metric = machine.number_option(138) == 1
+        self.limits = (*METRIC_LIMITS, machine.number_option(4)) if metric else INCH_LIMITS
+        self.depmax = machine.number_option(4)
+        self.codes: dict[bool, tuple[DimensionCode | None, ...]] = {}
+        for clockwise in (True, False):
+            codes: list[DimensionCode | None] = []
+            for cw, ccw, gdimul in CIRCULAR_RANGES:
+                location = cw if clockwise else ccw
+                value = machine.tableg[location]
+                codes.append(
+                    None if value is ABSENT else DimensionCode(int(value), location, gdimul)
+                )
+            self.codes[clockwise] = tuple(codes)
+
+    def select(self, radius: float, clockwise: bool) -> DimensionCode:
+        if radius > self.depmax:
+            raise FatalError(142, f"radius {radius:g} exceeds option 4")
+        index = next((i for i, limit in enumerate(self.limits) if radius < limit), len(self.limits))
+        for code in self.codes[clockwise][index:]:
+            if code is not None:
+                return code
+        raise FatalError(144, f"no TABLEG code for a radius of {radius:g}")

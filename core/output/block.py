@@ -73,6 +73,7 @@ class Block:
     # absolute printout and for checking a tape against its CL points
     position: tuple[int, ...] | None = None
     steps: tuple[int, ...] | None = None
+    radius: float | None = None  # CIRRAD of a circular block
     # set by the output element: the printed value of each register output, and the tape line
     words: tuple[tuple[int, str], ...] = ()
     punch: str | None = None

@@ -12,12 +12,22 @@ from __future__ import annotations
 from gecent.core.absent import ABSENT, Absent
 from gecent.core.errors import Diagnostic, NotYetSupported
 from gecent.core.feed.contour import FeedCommand
-from gecent.core.motion.gcode import LinearCodes
+from gecent.core.motion.gcode import CircularCodes, LinearCodes
 from gecent.core.output.block import Block, Code
 from gecent.core.output.format import RegisterFormatter
 from gecent.core.state import PostState
 
-MOTION_CODES = frozenset({Code.LINEAR})
+CIRCLE_CODES = frozenset(
+    {
+        Code.CIRCLE_XY_CLW,
+        Code.CIRCLE_XY_CCLW,
+        Code.CIRCLE_ZX_CLW,
+        Code.CIRCLE_ZX_CCLW,
+        Code.CIRCLE_YZ_CLW,
+        Code.CIRCLE_YZ_CCLW,
+    }
+)
+MOTION_CODES = frozenset({Code.LINEAR}) | CIRCLE_CODES
 NEVER_OUTPUT = frozenset({15, 19, 20})  # CODE, feed in IPM, speed in RPM: not registers
 ZERO_RULE_CELLS = frozenset({3, 4, 5, 6, 7, 8, 9, 10, 16})  # option 51 (001 L25024-25049)
 
@@ -28,6 +38,7 @@ class OutputElement:
         self.state = state
         self.step = machine.number_option(14)
         self.linear_codes = LinearCodes(machine, self.step)
+        self.circular_codes = CircularCodes(machine)
         self.feed = FeedCommand(machine)
         registers = machine.registers
         contouring = machine.number_option(1) == 0
@@ -69,7 +80,14 @@ class OutputElement:
 
     def _motion(self, block: Block) -> None:
         assert block.steps is not None
-        code = self.linear_codes.select(max(abs(s) for s in block.steps))
+        if block.code in CIRCLE_CODES:
+            assert block.radius is not None
+            code = self.circular_codes.select(block.radius, int(block.code) > 0)
+            offsets = [float(v) for v in block.cells[8:11] if v is not ABSENT]
+            length = sum(o * o for o in offsets) ** 0.5  # R from the arc offsets
+        else:
+            code = self.linear_codes.select(max(abs(s) for s in block.steps))
+            length = sum((s * self.step) ** 2 for s in block.steps) ** 0.5
         block.cells[2] = float(code.code)
         feed = self.state.feed
         if feed.rapid_ipm:
@@ -78,7 +96,6 @@ class OutputElement:
             self._assumed_feed = True
             self.diagnostics.append(Diagnostic("OPTION FEEDRATE ASSUMED."))
             feed.ipm = self.state.machine.number_option(23)
-        length = sum((s * self.step) ** 2 for s in block.steps) ** 0.5
         command, ipm = self.feed.linear(feed.ipm, code.gdimul, length)
         block.cells[11] = command
         block.cells[19] = ipm
@@ -86,6 +103,9 @@ class OutputElement:
     # -- GEOUT: words and the tape line (flow chart 12) ----------------------------------
 
     def _emit(self, block: Block) -> None:
+        if block.code is Code.FROM:  # printed in the absolute columns only, never punched
+            self.emitted.append(block)
+            return
         words = self._words(block, suppress=block.code in MOTION_CODES)
         block.words = tuple((location, printed) for location, _, printed, _ in words)
         if block.punched:

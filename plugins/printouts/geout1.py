@@ -86,7 +86,19 @@ def _absolute(value: float, decimals: int) -> str:
     return f"{value:+.{decimals}f}"
 
 
-PRINTABLE = frozenset({Code.FROM, Code.LINEAR})
+PRINTABLE = frozenset(
+    {
+        Code.FROM,
+        Code.LINEAR,
+        Code.G_ONLY,
+        Code.CIRCLE_XY_CLW,
+        Code.CIRCLE_XY_CCLW,
+        Code.CIRCLE_ZX_CLW,
+        Code.CIRCLE_ZX_CCLW,
+        Code.CIRCLE_YZ_CLW,
+        Code.CIRCLE_YZ_CCLW,
+    }
+)
 
 
 @dataclass(frozen=True)

@@ -1,0 +1,259 @@
+"""Circular interpolation (manual §3.4.4-3.4.4.1, 001 L4675-5383; flow chart 6; GOCIRC,
+SRFCHK, CHKAX, DETDIR, COMPR, QUADNT, QUADET, PROCQD, OFFARC).
+
+A type-3000 circle record (option 9 = 1) makes the next motion record a circle when it
+passes the tests: LINCIR mode (option 28 = 1), every point in the plane (option 5), the
+tool-path radius within option 4, no threading. APT writes several points on the arc and
+DETDIR finds the direction from the first two; CAM systems write one point, the arc's end,
+and the direction is then counterclockwise about the circle axis. The points then only serve
+the tests and the end point: the arc from the previous point to the last point of the record
+and its continuation records is cut where it crosses a quadrant boundary (a Mark Century
+control does at most 90 degrees per block) and output as CODE +-10/11/12 blocks whose I, J, K
+are the unsigned offsets of the centre from each block's start. A first or last block with
+a zero in-plane departure, or a last block that seems to reverse, goes out linear.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass
+from math import hypot
+
+from gecent.core.absent import ABSENT
+from gecent.core.cl.records import Circle, Motion, MotionSubtype
+from gecent.core.errors import Diagnostic
+from gecent.core.motion.rounding import round_to_step, to_steps
+from gecent.core.output.block import Block, Code
+from gecent.core.state import PostState
+
+# (u, v, normal) axis indices per plane: IPLANE 0 = XY, 1 = ZX, 2 = YZ (right-handed)
+PLANES = ((0, 1, 2), (2, 0, 1), (1, 2, 0))
+# where an arc leaves quadrant q, as (du, dv) on the unit circle
+LEAVE_CCLW = {1: (0, 1), 2: (-1, 0), 3: (0, -1), 4: (1, 0)}
+LEAVE_CLW = {1: (1, 0), 2: (0, 1), 3: (-1, 0), 4: (0, -1)}
+PLANE_CODES = (18, 19, 20)  # TABLEG: XY, ZX, YZ plane selection (001 L5124-5133)
+
+
+@dataclass(slots=True)
+class _Arc:
+    record: Motion
+    clockwise: bool
+    radius: float
+    start: tuple[float, float, float]
+    end: tuple[float, float, float]
+
+
+class CircularMotion:
+    def __init__(
+        self,
+        state: PostState,
+        emit: Callable[[Block], None],
+        warn: Callable[[Diagnostic], None],
+    ) -> None:
+        machine = state.machine
+        self.state = state
+        self.emit = emit
+        self.warn = warn
+        self.step = machine.number_option(14)
+        self.available = machine.number_option(9) == 1
+        self.epsilon = machine.number_option(5)
+        self.depmax = machine.number_option(4)
+        self.three_axes = machine.number_option(22) == 111
+        self.machine = machine
+        self.centre: tuple[float, float, float] | None = None  # CIRDAT, rounded to the step
+        self.plane = 0
+        self.last_plane = 0  # LSTPLN: XY at the start (decision: no plane block before FROM)
+        self.arc: _Arc | None = None
+        self.centre_moved: tuple[float, float, float] = (0.0, 0.0, 0.0)  # CIRDAT + TRANS
+        self.axis_sense = 0.0  # the circle axis component along the plane normal
+        self._reference = 0.0
+
+    @property
+    def collecting(self) -> bool:
+        return self.arc is not None
+
+    def surface(self, record: Circle) -> None:
+        """SRFCHK (001 L37913-37960): only the centre and the axis i, j are read."""
+        if not self.available:
+            self.centre = None
+            return
+        x, y, z, i, j, k = record.values[:6]
+        self.centre = (
+            round_to_step(x, self.step),
+            round_to_step(y, self.step),
+            round_to_step(z, self.step),
+        )
+        self.plane = 2 if abs(i) > self.epsilon else 1 if abs(j) > self.epsilon else 0
+        self.axis_sense = (k, j, i)[self.plane]
+
+    def begin(self, record: Motion) -> bool:
+        """GOCIRC's first entry: True when the record starts a circle (nothing output yet)."""
+        centre, self.centre = self.centre, None  # CIRFLG is spent by this motion either way
+        if centre is None or record.subtype is not MotionSubtype.GOTO:
+            return False
+        points = [p[:3] for p in record.points]
+        u, v, normal = PLANES[self.plane]
+        if self.machine.number_option(28) != 1:
+            return False
+        position = self.state.position
+        self._reference = points[0][normal]
+        if not self._planar(points, normal):
+            return False
+        if len(points) == 1:
+            # one point, as CAM systems write a circle: the arc's sense is the axis's,
+            # counterclockwise about (i, j, k) (decision; DETDIR needs two points)
+            if abs(self.axis_sense) <= self.epsilon:
+                return False
+            tz = position.translation[normal]
+            if abs(position.previous_part[normal] - tz - self._reference) > self.epsilon:
+                return False
+            clockwise: bool | None = self.axis_sense < 0
+        else:
+            clockwise = self._direction(points, centre, u, v)
+        if clockwise is None:
+            return False
+        tx, ty, tz = position.translation
+        moved = (centre[0] + tx, centre[1] + ty, centre[2] + tz)
+        start = tuple(position.previous_part[:3])
+        radius = hypot(start[u] - moved[u], start[v] - moved[v])
+        if radius > self.depmax:
+            return False
+        last = points[-1]
+        self.centre_moved = moved
+        self.arc = _Arc(
+            record,
+            clockwise,
+            radius,
+            (start[0], start[1], start[2]),
+            (last[0] + tx, last[1] + ty, last[2] + tz),
+        )
+        return True
+
+    def add(self, record: Motion) -> None:
+        """A continuation record carries on the circle: only its last point matters."""
+        assert self.arc is not None
+        points = [p[:3] for p in record.points]
+        if not self._planar(points, PLANES[self.plane][2]):
+            self.warn(Diagnostic("WARNING - CIRCLE DOES NOT LIE IN A PLANE", record.where))
+        tx, ty, tz = self.state.position.translation
+        x, y, z = points[-1]
+        self.arc.end = (x + tx, y + ty, z + tz)
+
+    def finish(self) -> None:
+        """The circle is complete: split it at the quadrant boundaries and output it."""
+        arc, self.arc = self.arc, None
+        assert arc is not None
+        u, v, normal = PLANES[self.plane]
+        c = self.centre_moved
+        first = (arc.start[u] - c[u], arc.start[v] - c[v])
+        last = (arc.end[u] - c[u], arc.end[v] - c[v])
+        ccw = not arc.clockwise
+        entered = _quadrant(first, ccw, first_point=True)
+        left = _quadrant(last, ccw, first_point=False)
+        crossings = (left - entered) % 4 if ccw else (entered - left) % 4
+        if crossings == 0 and _long_way(first, last, ccw):
+            crossings = 4
+        leave = LEAVE_CCLW if ccw else LEAVE_CLW
+        points: list[tuple[float, float, float]] = []
+        quadrant = entered
+        for _ in range(crossings):
+            du, dv = leave[quadrant]
+            quadrant = quadrant % 4 + 1 if ccw else (quadrant + 2) % 4 + 1
+            point = [0.0, 0.0, 0.0]
+            point[u] = c[u] + du * arc.radius
+            point[v] = c[v] + dv * arc.radius
+            point[normal] = arc.start[normal]
+            points.append((point[0], point[1], point[2]))
+        points.append(arc.end)
+        code = Code(int((10 + self.plane) * (-1 if ccw else 1)))
+        self._plane_block(arc.record)
+        for index, corner in enumerate(points):
+            self._segment(arc, corner, code, index, len(points), points)
+
+    def _plane_block(self, record: Motion) -> None:
+        if self.plane == self.last_plane or not self.three_axes:
+            return
+        self.last_plane = self.plane
+        g = self.machine.tableg[PLANE_CODES[self.plane]]
+        if g is ABSENT:
+            return
+        block = Block(Code.G_ONLY, record.number)
+        block.cells[2] = float(g)
+        self.emit(block)
+
+    def _segment(
+        self,
+        arc: _Arc,
+        point: tuple[float, float, float],
+        code: Code,
+        index: int,
+        count: int,
+        points: list[tuple[float, float, float]],
+    ) -> None:
+        position = self.state.position
+        u, v, _ = PLANES[self.plane]
+        position.present_part[:3] = list(point)
+        position.present[:3] = [to_steps(value, self.step) for value in point]
+        departures = [position.present[a] - position.previous[a] for a in range(3)]
+        if not any(departures):
+            return
+        circular = True
+        if index in (0, count - 1) and (departures[u] == 0 or departures[v] == 0):
+            circular = False  # zero departure at the start or end (001 L5284-5293)
+        if circular and index == count - 1 and count >= 2:
+            c = self.centre_moved
+            before = points[index - 1]
+            axis = u if abs(before[u] - c[u]) > abs(before[v] - c[v]) else v
+            if abs(arc.end[axis] - c[axis]) >= abs(before[axis] - c[axis]):
+                circular = False  # apparent reversal at the end point (001 L5355-5383)
+        block = Block(code if circular else Code.LINEAR, arc.record.number)
+        for axis in range(3):
+            block.cells[3 + axis] = departures[axis] * self.step
+        if circular:
+            c = self.centre_moved
+            for axis in (u, v):
+                steps = to_steps(abs(c[axis] - position.previous[axis] * self.step), self.step)
+                block.cells[8 + axis] = steps * self.step
+            block.radius = arc.radius
+        block.steps = tuple(departures)
+        block.position = tuple(position.present[:3])
+        self.emit(block)
+        position.previous_part[:] = position.present_part
+        position.previous[:] = position.present
+
+    def _planar(self, points: list[tuple[float, ...]], normal: int) -> bool:
+        return all(abs(p[normal] - self._reference) <= self.epsilon for p in points)
+
+    @staticmethod
+    def _direction(
+        points: list[tuple[float, ...]], centre: tuple[float, float, float], u: int, v: int
+    ) -> bool | None:
+        """DETDIR (001 L4950-4986): the sign of the cross product of the first two record
+        points about the centre; negative is clockwise. Equal points: try the next one."""
+        a = (points[0][u] - centre[u], points[0][v] - centre[v])
+        for point in points[1:]:
+            b = (point[u] - centre[u], point[v] - centre[v])
+            cross = a[0] * b[1] - b[0] * a[1]
+            if cross:
+                return cross < 0
+        return None
+
+
+def _quadrant(point: tuple[float, float], ccw: bool, *, first_point: bool) -> int:
+    """QUADNT (001 L4883-4930): a point on an axis belongs to the quadrant the arc enters
+    next (first point) or last passed through (last point)."""
+    pu, pv = point
+    if pu and pv:
+        if pu > 0:
+            return 1 if pv > 0 else 4
+        return 2 if pv > 0 else 3
+    turn = 0 if pu > 0 else 1 if pv > 0 else 2 if pu < 0 else 3
+    if first_point:
+        return turn % 4 + 1 if ccw else (turn - 1) % 4 + 1
+    return (turn - 1) % 4 + 1 if ccw else turn % 4 + 1
+
+
+def _long_way(first: tuple[float, float], last: tuple[float, float], ccw: bool) -> bool:
+    """Start and end in one quadrant with the end behind the start: nearly a full circle."""
+    cross = first[0] * last[1] - last[0] * first[1]
+    return cross <= 0 if ccw else cross >= 0
