@@ -197,3 +197,28 @@ def test_cam_circle_with_one_point_takes_its_sense_from_the_axis() -> None:
     assert ccw == ["N004G03X-2Y+2I2F050"]
     # clockwise about -z from (2, 0) to (0, 2) is the long way round: three quadrants
     assert cw == ["N004G02X-2Y-2I2F050", "N004X-2Y+2J2", "N004X+2Y+2I2"]
+
+
+def test_mach04_lathe_profile_is_shuffled_onto_z_and_x() -> None:
+    """MACH04 (option 59 = 152300, 60 = 181600; 001 L27763-27764): CL x goes out as +Z, CL y
+    as -X, I as K and J as I; the lathe's G codes are its own (G11 under 1 inch, G21 for a
+    small CCLW arc, 001 L27694-27699)."""
+    machine = get_plugins().machine("mach04").load()
+    lines = tape(
+        [
+            "FROM/5,2,0",
+            "FEDRAT/10",
+            "GOTO/0,2,0",
+            "GOTO/0,1.5,0",
+            "CIRCLE/-0.5,1.5,0,0,0,-1,0.5",
+            "GOTO/-0.5,1,0",
+            "GOTO/-3,1,0",
+        ],
+        machine,
+    )
+    assert lines == [
+        "N003G01Z-5F020",
+        "N004G11X+05",
+        "N006G31X+05Z-05K05",
+        "N007G01Z-25F040",
+    ]

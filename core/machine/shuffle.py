@@ -55,3 +55,14 @@ def decode_shuffle(value: float, axes: str) -> tuple[AxisTarget | None, ...]:
 
 def describe_shuffle(targets: tuple[AxisTarget | None, ...]) -> str:
     return "".join(str(t) for t in targets if t is not None) or "(none)"
+
+
+_CELLS = {"X": 3, "Y": 4, "Z": 5, "I": 8, "J": 9, "K": 10}
+
+
+def cell_map(value: float, axes: str) -> tuple[tuple[int, int] | None, ...]:
+    """SHUFFL's vector: for each internal axis, (DBFSEG cell, sign) on output, or None."""
+    return tuple(
+        None if target is None else (_CELLS[target.axis], target.sign)
+        for target in decode_shuffle(value, axes)
+    )

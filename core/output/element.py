@@ -10,8 +10,9 @@ into the control's command (CONTUR, core/feed/contour.py) and formats each regis
 from __future__ import annotations
 
 from gecent.core.absent import ABSENT, Absent
-from gecent.core.errors import Diagnostic, NotYetSupported
+from gecent.core.errors import Diagnostic, FatalError, NotYetSupported
 from gecent.core.feed.contour import FeedCommand
+from gecent.core.machine.shuffle import cell_map
 from gecent.core.motion.gcode import CircularCodes, LinearCodes
 from gecent.core.output.block import Block, Code
 from gecent.core.output.format import RegisterFormatter
@@ -54,6 +55,12 @@ class OutputElement:
             self.formatters.append(
                 RegisterFormatter(location, registers.letters[location], fmt, drop_trailing=drop)
             )
+        try:
+            self.shuffle = cell_map(machine.number_option(59), "XYZ") + cell_map(
+                machine.number_option(60), "IJK"
+            )
+        except ValueError as exc:
+            raise FatalError(7, str(exc)) from None
         self.zero_rule = machine.number_option(51)
         self.suppress_g = machine.number_option(38) == 0
         self.suppress_f = machine.number_option(107) in (1.0, 2.0)
@@ -106,6 +113,7 @@ class OutputElement:
         if block.code is Code.FROM:  # printed in the absolute columns only, never punched
             self.emitted.append(block)
             return
+        self._shuffle(block)
         words = self._words(block, suppress=block.code in MOTION_CODES)
         block.words = tuple((location, printed) for location, _, printed, _ in words)
         if block.punched:
@@ -113,6 +121,18 @@ class OutputElement:
             skip = block.cells[1] is not ABSENT and float(block.cells[1]) < 0
             block.punch = "/" + punch if skip else punch
         self.emitted.append(block)
+
+    def _shuffle(self, block: Block) -> None:
+        """SHUFFL (001 L37532-37564): options 59/60 put the internal X, Y, Z and I, J, K on
+        the machine's axes with their signs, for every block at output."""
+        cells = block.cells
+        internal = [cells[k] for k in (3, 4, 5, 8, 9, 10)]
+        for k in (3, 4, 5, 8, 9, 10):
+            cells[k] = ABSENT
+        for value, target in zip(internal, self.shuffle, strict=True):
+            if target is not None and value is not ABSENT:
+                cell, sign = target
+                cells[cell] = sign * float(value) if cell < 8 else float(value)
 
     def _words(self, block: Block, *, suppress: bool) -> list[tuple[int, str, str, str]]:
         """(location, letter, printed, punched) of each register the block outputs."""

@@ -15,6 +15,7 @@ from gecent.core.errors import NotYetSupported
 from gecent.core.hookspecs import Register, hookimpl
 from gecent.core.listing import environment
 from gecent.core.machine.definition import MachineDefinition
+from gecent.core.machine.shuffle import cell_map
 from gecent.core.output.block import TEXT_CODES, Block, Code
 from gecent.core.output.format import NO_DECIMAL_POINT
 from gecent.core.output.tape import tape_feet, tape_lines
@@ -114,6 +115,7 @@ class Geout1:
         if block.code not in PRINTABLE:
             raise NotYetSupported(f"GEOUT1 line for a CODE {int(block.code)} block")
         step = machine.number_option(14)
+        shuffle = cell_map(machine.number_option(59), "XYZ")
         printed = dict(block.words)
         fields: list[tuple[Column, str]] = []
         for column in layout:
@@ -123,11 +125,12 @@ class Geout1:
                 if text is not None:
                     fields.append((column, text))
             elif key.startswith("ABS-") and block.position is not None:
-                axis = int(key[4:]) - 3
-                fmt = machine.registers.formats[int(key[4:])]
-                if 0 <= axis < len(block.position) and fmt is not None:
-                    value = block.position[axis] * step
-                    fields.append((column, _absolute(value, fmt.right)))
+                cell = int(key[4:])
+                fmt = machine.registers.formats[cell]
+                for internal, target in enumerate(shuffle):
+                    if target is not None and target[0] == cell and fmt is not None:
+                        value = target[1] * block.position[internal] * step
+                        fields.append((column, _absolute(value, fmt.right)))
             elif key == "F-IPM" and block.cells[19] is not ABSENT:
                 fields.append((column, f"{float(block.cells[19]):.3f}".rstrip("0")))
             elif key == "CLREC" and block.record is not None:
