@@ -224,7 +224,9 @@ def post(
     printout = plugins.get("printouts", layout)
     if printout is None:
         raise NotYetSupported(f"printout GEOUT{layout} (option 164 = {layout})")
-    listing = printout.render(result.machine, result.blocks, result.partno)
+    listing = printout.render(
+        result.machine, result.blocks, result.partno, cut_minutes=result.cut_minutes
+    )
     tape = tape_image(result.blocks)
     frames = punch(tape.splitlines(), punch_to[0]) if punch_to else None
     stem = Path(input_path)

@@ -48,6 +48,7 @@ class RunResult:
     diagnostics: list[Diagnostic] = field(default_factory=list)
     partno: str = ""
     records: int = 0
+    cut_minutes: float = 0.0
 
 
 class Run:
@@ -66,6 +67,7 @@ class Run:
             "INSERT": self._insert,
             "MACHIN": self._machin,
             "FEDRAT": self._fedrat,
+            "RAPID": self._rapid,
         }
 
     @property
@@ -140,6 +142,7 @@ class Run:
         if not self.finished:
             self.warn(Diagnostic("NO FINI STATEMENT AT THE END OF THE CL FILE"))
         self.result.blocks = self.output.emitted
+        self.result.cut_minutes = self.output.cut_minutes
         return self.result
 
     def _collect_notes(self, record: Record) -> None:
@@ -156,9 +159,62 @@ class Run:
             )
         if len(record.points[0]) == 6:
             raise NotYetSupported("multiaxis motion", record.where)
+        if record.subtype is not MotionSubtype.FROM:
+            self._test_flags(record)
         if self.circle.begin(record):
             return
         self.motion.record(record)
+
+    def _rapid(self, statement: Statement) -> None:
+        """RAPID: the next motion record goes at rapid traverse (one-shot, option 109 = 0)."""
+        if statement.args:
+            raise NotYetSupported(f"RAPID/{statement.args[0]}", statement.where)
+        mode = self.machine.number_option(109)
+        if mode != 0:
+            raise NotYetSupported(f"modal RAPID (option 109 = {mode:g})", statement.where)
+        self.state.feed.rapid_requested = True
+
+    def _test_flags(self, record: Motion) -> None:
+        """TSTFLG (001 L38926-38958): a RAPID request starts rapid traverse for this record
+        (RAPIDO); a one-shot rapid ends at the next record (RAPIDX) (001 L11809-11910)."""
+        feed = self.state.feed
+        machine = self.machine
+        if feed.rapid_requested:
+            feed.rapid_requested = False
+            if feed.rapid_mode:
+                return
+            if machine.number_option(46) != 0:
+                raise NotYetSupported("rapid traverse gear shifting (option 46)", record.where)
+            length = self._path_length(record)
+            feed.rapid_mode = 1
+            if machine.number_option(37) > length:
+                # shorter than the minimum rapid path: the feed range's highest feed
+                feed.rapid_ipm, feed.rapid_low = machine.number_option(39), True
+                return
+            rate = machine.number_option(42)
+            reader = machine.number_option(13)
+            if reader > 0 and length > 0 and rate > length / reader:
+                feed.rapid_ipm = length / reader  # held down by the tape reader: positive
+            else:
+                feed.rapid_ipm = -rate
+        elif feed.rapid_mode == 1:
+            feed.rapid_mode, feed.rapid_ipm, feed.rapid_low = 0, 0.0, False
+
+    def _path_length(self, record: Motion) -> float:
+        """PLENTH: the length of the whole record's path from the previous point."""
+        position = self.state.position
+        tx, ty, tz = position.translation
+        at = position.previous_part[:3]
+        total = 0.0
+        for point in record.points:
+            if record.subtype is MotionSubtype.GODLTA:
+                values = point if len(point) == 3 else (0.0, 0.0, point[0])
+                nxt = [at[k] + values[k] for k in range(3)]
+            else:
+                nxt = [point[0] + tx, point[1] + ty, point[2] + tz]
+            total += sum((nxt[k] - at[k]) ** 2 for k in range(3)) ** 0.5
+            at = nxt
+        return total
 
     def _arelem(self, record: Arelem) -> None:
         tolerances = self.state.tolerances

@@ -33,7 +33,8 @@ class Feed:
     per_revolution: bool = False
     rapid_requested: bool = False
     rapid_mode: int = 0  # FLRPON: 0 off, +1 one-shot, -1 modal
-    rapid_ipm: float = 0.0  # FRAPID: 0 = not rapid
+    rapid_ipm: float = 0.0  # FRAPID: 0 = not rapid; negative = rapid; positive = reader-limited
+    rapid_low: bool = False  # RAPLOW: a move shorter than option 37 stays in the feed range
 
 
 @dataclass(slots=True)

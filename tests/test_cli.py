@@ -81,7 +81,16 @@ def test_post_hello_writes_tape_and_listing(tmp_path: Path) -> None:
     tape, listing = tmp_path / "h.tape", tmp_path / "h.lis"
     code, _, err = run("post", str(HELLO), "-o", str(tape), "--listing", str(listing))
     assert code == 0, err
-    assert tape.read_text() == "BRACKET4711OP10\nN001M00\n"
+    # MACH23: X/Y/Z format -24, G never suppressed (option 38 = 1), feedrate number
+    # 10 * 20 IPM / S; the arc's F is 10 * 20 / 1 (001 L10816-10935)
+    assert tape.read_text() == (
+        "BRACKET4711OP10\n"
+        "N009G01X+01Y+01Z-02F082\n"
+        "N010G01X+03F067\n"
+        "N012G03X+01Y+01J01F200\n"
+        "N013G01Y+04F050\n"
+        "N001M00\n"
+    )
     text = listing.read_text()
     assert text.startswith("***GENERAL ELECTRIC GECENT III POSTPROCESSOR***\nSAMPLE MILL")
     assert "CLAMP THE PART ON THE LEFT STOP" in text

@@ -127,3 +127,33 @@ def test_appendix_7_2_no_pulse_is_lost(points: list[tuple[float, float, float]])
             for axis, value in enumerate((x, y, z)):
                 assert abs(reached[number][axis] * STEP - value) <= STEP
                 assert reached[number][axis] == to_steps(value, STEP)
+
+
+def test_one_shot_rapid_with_vector_optimisation() -> None:
+    """RAPID (001 L11809-11910, L12530-12638): the next record goes at rapid; option 36 = 0
+    moves each axis at its own rate (options 42-44 = 200 IPM): rho = 5 / 200, F = D / rho
+    = 400; the command is held to option 45 (500); the feed returns on the next record."""
+    lines = tape(
+        [
+            "FROM/0,0,2",
+            "RAPID",
+            "GOTO/10,5,0.1",
+            "FEDRAT/10",
+            "GOTO/10,5,0",
+            "RAPID",
+            "GOTO/12,5,0.1",
+            "GOTO/13,5,0.1",
+        ]
+    )
+    assert lines == [
+        "N003G01X+5Y+25Z-095F400",
+        "N003X+5Y+25Z-095",
+        "N005Z-01F500",
+        "N007X+2Z+01",  # 10 / (2 / 200) = 1000 -> 500, the same F as before: not repeated
+        "N008X+1F100",
+    ]
+
+
+def test_rapid_never_makes_an_arc() -> None:
+    lines = tape(["FROM/2,0,0", "RAPID", "CIRCLE/0,0,0,0,0,1,2", "GOTO/0,2,0"])
+    assert lines == ["N004G01X-2Y+2F500"]  # 10 / (2 / 200) = 1000, held to option 45

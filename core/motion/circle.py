@@ -91,6 +91,8 @@ class CircularMotion:
         centre, self.centre = self.centre, None  # CIRFLG is spent by this motion either way
         if centre is None or record.subtype is not MotionSubtype.GOTO:
             return False
+        if self.state.feed.rapid_ipm:
+            return False  # a rapid move is never an arc (decision, PROCQD reads FRAPID)
         points = [p[:3] for p in record.points]
         u, v, normal = PLANES[self.plane]
         if self.machine.number_option(28) != 1:

@@ -74,6 +74,7 @@ class Block:
     position: tuple[int, ...] | None = None
     steps: tuple[int, ...] | None = None
     radius: float | None = None  # CIRRAD of a circular block
+    rapid: bool = False
     # set by the output element: the printed value of each register output, and the tape line
     words: tuple[tuple[int, str], ...] = ()
     punch: str | None = None

@@ -9,9 +9,11 @@ into the control's command (CONTUR, core/feed/contour.py) and formats each regis
 
 from __future__ import annotations
 
+from math import asin
+
 from gecent.core.absent import ABSENT, Absent
-from gecent.core.errors import Diagnostic, FatalError, NotYetSupported
-from gecent.core.feed.contour import FeedCommand
+from gecent.core.errors import Diagnostic, FatalError
+from gecent.core.feed.contour import FeedCommand, RapidCommand
 from gecent.core.machine.shuffle import cell_map
 from gecent.core.motion.gcode import CircularCodes, LinearCodes
 from gecent.core.output.block import Block, Code
@@ -41,6 +43,8 @@ class OutputElement:
         self.linear_codes = LinearCodes(machine, self.step)
         self.circular_codes = CircularCodes(machine)
         self.feed = FeedCommand(machine)
+        self.rapid = RapidCommand(machine)
+        self.cut_minutes = 0.0
         registers = machine.registers
         contouring = machine.number_option(1) == 0
         order = [k for k in (machine.output_order or ()) if k not in NEVER_OUTPUT] or [
@@ -98,7 +102,15 @@ class OutputElement:
         block.cells[2] = float(code.code)
         feed = self.state.feed
         if feed.rapid_ipm:
-            raise NotYetSupported("rapid traverse on a contouring machine (RAPID)")
+            departures = tuple(s * self.step for s in block.steps)
+            rapid, ipm = self.rapid.command(
+                departures, code.gdimul, feed.rapid_ipm, low=feed.rapid_low
+            )
+            block.cells[11] = ABSENT if rapid is None else rapid
+            block.cells[19] = ipm
+            block.rapid = True
+            self.cut_minutes += sum(d * d for d in departures) ** 0.5 / ipm
+            return
         if feed.programmed is None and not self._assumed_feed:
             self._assumed_feed = True
             self.diagnostics.append(Diagnostic("OPTION FEEDRATE ASSUMED."))
@@ -106,6 +118,12 @@ class OutputElement:
         command, ipm = self.feed.linear(feed.ipm, code.gdimul, length)
         block.cells[11] = command
         block.cells[19] = ipm
+        if block.code in CIRCLE_CODES:
+            assert block.radius is not None
+            arc = _arc_length(block, self.step)
+            self.cut_minutes += arc / ipm
+        else:
+            self.cut_minutes += length / ipm
 
     # -- GEOUT: words and the tape line (flow chart 12) ----------------------------------
 
@@ -162,3 +180,11 @@ class OutputElement:
                     continue
             words.append((location, formatter.letter, text.printed, text.punched))
         return words
+
+
+def _arc_length(block: Block, step: float) -> float:
+    """The length of a quadrant segment: its chord over the radius gives the angle."""
+    assert block.steps is not None and block.radius is not None
+    chord = sum((s * step) ** 2 for s in block.steps) ** 0.5
+    ratio = min(1.0, chord / (2 * block.radius)) if block.radius else 0.0
+    return 2 * block.radius * asin(ratio)
