@@ -1,32 +1,96 @@
-"""The contouring feed command (CONTUR, manual §4.1.2, 001 L10776-11078), option 10 = 0:
-the feedrate number Fc = D * FIPM / S.
+"""The contouring feed command (CONTUR, manual §4.1.2, 001 L10776-11197), by option 10:
 
-D is GDIMUL, the dimension multiplier times ten of the block's G code (SELG); S the length of
-the block's machine departures. Fc is held between option 49 (minimum) and option 24 (maximum);
-a clamped command gives back the feed it really produces, FIPM = Fc * S / D (001 L10799-10815),
-for the absolute printout. The command is rounded half-up to the F register's decimals.
+* 0, feedrate number: Fc = D * FIPM / S, D the GDIMUL of the block's G code (SELG), S the
+  length of its machine departures (the radius for an arc); held within options 49 and 24.
+* -1 .. -4, inverse time: D = 1, so Fc = FIPM / S = 1 / minutes; the F format and limits
+  change with the block's dimension code (the 16-row table, 001 L11113-11146; FVARGO).
+* +1, EIA magic three (appendix 7.1): needs REGFOR(11) = 30 and option 26 = 1.
+
+A clamped command gives back the feed it really produces, FIPM = Fc * S / D (001
+L10799-10815), for the absolute printout; commands are rounded half-up to the F format.
 """
 
 from __future__ import annotations
 
 from decimal import ROUND_HALF_UP, Decimal
 
-from gecent.core.errors import NotYetSupported
+from gecent.core.errors import InputError, NotYetSupported
+from gecent.core.feed.magic3 import decode, magic3
 from gecent.core.machine.definition import MachineDefinition
+from gecent.core.motion.gcode import LINEAR_RANGES
+
+# (option 10, TABLEG location of the dimension code) -> (REGFOR(11), FCOMIN, FCOMAX); the
+# manual names the codes G12/G11/G01/G10/G23/G26, locations 13/12/2/11/14/15 (001 L11113-11146;
+# -3/G12's FCOMAX 9999.0 as the chapter prints it, the option text's "999" is a misprint)
+INVERSE_TIME = {
+    (-1, 12): (31.0, 1.0, 999.9),
+    (-1, 2): (32.0, 0.1, 99.99),
+    (-1, 11): (33.0, 0.01, 9.999),
+    (-2, 12): (30.0, 1.0, 999.0),
+    (-2, 2): (31.0, 0.1, 99.9),
+    (-2, 11): (32.0, 0.01, 9.99),
+    (-3, 13): (40.0, 1.0, 9999.0),
+    (-3, 12): (41.0, 0.1, 999.9),
+    (-3, 2): (42.0, 0.01, 99.99),
+    (-3, 11): (43.0, 0.001, 9.999),
+    (-4, 13): (42.0, 1.0, 9999.99),
+    (-4, 12): (43.0, 0.1, 999.999),
+    (-4, 2): (44.0, 0.01, 99.9999),
+    (-4, 11): (45.0, 0.001, 9.99999),
+    (-4, 14): (46.0, 0.0001, 0.999999),
+    (-4, 15): (47.0, 0.00001, 0.0999999),
+}
+_CLASS_ORDER = [location for location, _ in LINEAR_RANGES]
 
 
 class FeedCommand:
     def __init__(self, machine: MachineDefinition) -> None:
         self.form = machine.number_option(10)
+        self.machine = machine
         fmt = machine.registers.formats[11]
         self.quantum = Decimal(1).scaleb(-(fmt.right if fmt is not None else 0))
         self.maximum = machine.number_option(24)
         self.minimum = machine.number_option(49)
+        if self.form == 1 and (fmt is None or fmt.regfor != 30 or machine.number_option(26) != 1):
+            raise InputError(
+                f"machine {machine.label}: option 10 = +1 (magic three) needs REGFOR(11) = 30 "
+                "and option 26 = 1 (001 L11189-11197)"
+            )
+        if self.form not in (0, 1, -1, -2, -3, -4):
+            raise NotYetSupported(f"contouring feed command form option 10 = {self.form:g}")
+
+    def command(
+        self, ipm: float, gdimul: float, length: float, dimension_class: int
+    ) -> tuple[float, float, float | None]:
+        """(command, feed in IPM it gives, F format for this block or None for the machine's)
+        for a block of ``length`` (its path, or its radius for an arc) whose dimension code
+        has the TABLEG location ``dimension_class`` (a linear range location)."""
+        if self.form == 0:
+            return (*self.linear(ipm, gdimul, length), None)
+        if self.form == 1:
+            code = magic3(ipm)
+            if code is None:
+                raise NotYetSupported(f"magic three for a feed of {ipm:g} IPM")
+            return float(code), decode(code), None
+        regfor, lowest, highest = self._row(dimension_class)
+        command = ipm / length
+        used = min(max(command, lowest), highest)
+        decimals = int(regfor) % 10
+        rounded = float(Decimal(repr(used)).quantize(Decimal(1).scaleb(-decimals), ROUND_HALF_UP))
+        return rounded, (ipm if used == command else used * length), regfor
+
+    def _row(self, location: int) -> tuple[float, float, float]:
+        start = _CLASS_ORDER.index(location)
+        for candidate in _CLASS_ORDER[start:]:
+            row = INVERSE_TIME.get((int(self.form), candidate))
+            if row is not None:
+                return row
+        raise NotYetSupported(
+            f"inverse time (option 10 = {self.form:g}) for the TABLEG({location}) code"
+        )
 
     def linear(self, ipm: float, gdimul: float, length: float) -> tuple[float, float]:
-        """(command, feed in IPM) for a linear block of ``length`` inches."""
-        if self.form != 0:
-            raise NotYetSupported(f"contouring feed command form option 10 = {self.form:g}")
+        """The feedrate number (option 10 = 0): (command, feed in IPM)."""
         command = gdimul * ipm / length
         if command > self.maximum:
             command = self.maximum

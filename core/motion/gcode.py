@@ -24,6 +24,7 @@ class DimensionCode:
     code: int  # the G code number (TABLEG value)
     location: int  # its TABLEG location
     gdimul: float
+    size_class: int = 0  # the linear range location of its size (13, 12, 2, 11, 14, 15)
 
 
 class LinearCodes:
@@ -38,7 +39,9 @@ class LinearCodes:
         codes: list[DimensionCode | None] = []
         for location, gdimul in LINEAR_RANGES:
             value = machine.tableg[location]
-            codes.append(None if value is ABSENT else DimensionCode(int(value), location, gdimul))
+            codes.append(
+                None if value is ABSENT else DimensionCode(int(value), location, gdimul, location)
+            )
         self.codes = tuple(codes)
 
     def select(self, largest_steps: int) -> DimensionCode:

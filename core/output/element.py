@@ -14,6 +14,7 @@ from math import asin
 from gecent.core.absent import ABSENT, Absent
 from gecent.core.errors import Diagnostic, FatalError
 from gecent.core.feed.contour import FeedCommand, RapidCommand
+from gecent.core.machine.regformat import decode_regfor
 from gecent.core.machine.shuffle import cell_map
 from gecent.core.motion.gcode import CircularCodes, LinearCodes
 from gecent.core.output.block import Block, Code
@@ -45,6 +46,7 @@ class OutputElement:
         self.feed = FeedCommand(machine)
         self.rapid = RapidCommand(machine)
         self.cut_minutes = 0.0
+        self._f_formats: dict[float, RegisterFormatter] = {}
         registers = machine.registers
         contouring = machine.number_option(1) == 0
         order = [k for k in (machine.output_order or ()) if k not in NEVER_OUTPUT] or [
@@ -115,9 +117,10 @@ class OutputElement:
             self._assumed_feed = True
             self.diagnostics.append(Diagnostic("OPTION FEEDRATE ASSUMED."))
             feed.ipm = self.state.machine.number_option(23)
-        command, ipm = self.feed.linear(feed.ipm, code.gdimul, length)
+        command, ipm, f_format = self.feed.command(feed.ipm, code.gdimul, length, code.size_class)
         block.cells[11] = command
         block.cells[19] = ipm
+        block.f_format = f_format
         if block.code in CIRCLE_CODES:
             assert block.radius is not None
             arc = _arc_length(block, self.step)
@@ -139,6 +142,18 @@ class OutputElement:
             skip = block.cells[1] is not ABSENT and float(block.cells[1]) < 0
             block.punch = "/" + punch if skip else punch
         self.emitted.append(block)
+
+    def _f_formatter(self, regfor: float) -> RegisterFormatter:
+        """FVARGO: inverse time changes the F format with the block's G code."""
+        formatter = self._f_formats.get(regfor)
+        if formatter is None:
+            fmt = decode_regfor(regfor)
+            assert fmt is not None
+            letter = self.state.machine.registers.letters[11]
+            formatter = self._f_formats[regfor] = RegisterFormatter(
+                11, letter, fmt, drop_trailing=False
+            )
+        return formatter
 
     def _shuffle(self, block: Block) -> None:
         """SHUFFL (001 L37532-37564): options 59/60 put the internal X, Y, Z and I, J, K on
@@ -171,6 +186,8 @@ class OutputElement:
                 if self.suppress_f and number == self.previous_f:
                     continue
                 self.previous_f = number
+            if location == 11 and block.f_format is not None:
+                formatter = self._f_formatter(block.f_format)
             text = formatter.format(number)
             if location in ZERO_RULE_CELLS and text.punched.strip("+-0") == "":
                 if self.zero_rule == 0:  # delete value and address (standard)
