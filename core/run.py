@@ -34,7 +34,7 @@ from gecent.core.machine.selection import (
     resolve_machine,
 )
 from gecent.core.motion.circle import CircularMotion
-from gecent.core.motion.linear import LinearMotion
+from gecent.core.motion.linear import LinearMotion, godlta_delta
 from gecent.core.output.block import Block, Code
 from gecent.core.output.element import OutputElement
 from gecent.core.plugins import PluginSet
@@ -208,8 +208,8 @@ class Run:
         total = 0.0
         for point in record.points:
             if record.subtype is MotionSubtype.GODLTA:
-                values = point if len(point) == 3 else (0.0, 0.0, point[0])
-                nxt = [at[k] + values[k] for k in range(3)]
+                delta = godlta_delta(point)
+                nxt = [at[k] + delta[k] for k in range(3)]
             else:
                 nxt = [point[0] + tx, point[1] + ty, point[2] + tz]
             total += sum((nxt[k] - at[k]) ** 2 for k in range(3)) ** 0.5
@@ -277,14 +277,13 @@ class Run:
                 )
             )
         changed, notes = apply_machin_options(self.machine, request)
-        self.result.machine = changed
-        self.state.machine = changed
-        if changed is not self.machine or self._output is not None:
-            emitted = self.output.emitted
-            self._output = None
-            self._motion = None
-            self._circle = None
-            self.output.emitted.extend(emitted)
+        if changed is not self.machine:
+            # the elements precompute from the machine: rebuild them, keeping what is output
+            self.result.machine = self.state.machine = changed
+            previous, self._output, self._motion, self._circle = self._output, None, None, None
+            if previous is not None:
+                self.output.emitted.extend(previous.emitted)
+                self.output.cut_minutes = previous.cut_minutes
         for note in notes:
             self.warn(note)
 

@@ -12,6 +12,7 @@ import struct
 from collections.abc import Iterator
 from typing import BinaryIO
 
+from gecent.core.cl.apt_source import TEXT_MAJORS
 from gecent.core.cl.binary_layout import (
     APT4,
     MARKER_BYTES,
@@ -40,7 +41,7 @@ from gecent.core.cl.records import (
 from gecent.core.cl.vocabulary import Vocabulary, vocabulary
 from gecent.core.errors import InputError, SourcePosition
 
-TEXT_CODES = frozenset({1044, 1045, 1046})  # PPRINT, PARTNO, INSERT (001 L2944-2975)
+TEXT_CODES = frozenset(vocabulary().major[name] for name in TEXT_MAJORS)  # PPRINT, PARTNO, INSERT
 READ_BLOCK = 1 << 16
 _MOTION_SUBTYPES = {int(kind): kind for kind in MotionSubtype}
 CIRCLE_SURFACE = 4

@@ -12,12 +12,11 @@ L10799-10815), for the absolute printout; commands are rounded half-up to the F 
 
 from __future__ import annotations
 
-from decimal import ROUND_HALF_UP, Decimal
-
-from gecent.core.errors import InputError, NotYetSupported
+from gecent.core.errors import NotYetSupported
 from gecent.core.feed.magic3 import decode, magic3
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.motion.gcode import LINEAR_RANGES
+from gecent.core.motion.rounding import half_up
 
 # (option 10, TABLEG location of the dimension code) -> (REGFOR(11), FCOMIN, FCOMAX); the
 # manual names the codes G12/G11/G01/G10/G23/G26, locations 13/12/2/11/14/15 (001 L11113-11146;
@@ -45,17 +44,12 @@ _CLASS_ORDER = [location for location, _ in LINEAR_RANGES]
 
 class FeedCommand:
     def __init__(self, machine: MachineDefinition) -> None:
+        # magic three's REGFOR(11) = 30 and option 26 = 1 are checked when the machine loads
         self.form = machine.number_option(10)
-        self.machine = machine
         fmt = machine.registers.formats[11]
-        self.quantum = Decimal(1).scaleb(-(fmt.right if fmt is not None else 0))
+        self.decimals = fmt.right if fmt is not None else 0
         self.maximum = machine.number_option(24)
         self.minimum = machine.number_option(49)
-        if self.form == 1 and (fmt is None or fmt.regfor != 30 or machine.number_option(26) != 1):
-            raise InputError(
-                f"machine {machine.label}: option 10 = +1 (magic three) needs REGFOR(11) = 30 "
-                "and option 26 = 1 (001 L11189-11197)"
-            )
         if self.form not in (0, 1, -1, -2, -3, -4):
             raise NotYetSupported(f"contouring feed command form option 10 = {self.form:g}")
 
@@ -75,8 +69,7 @@ class FeedCommand:
         regfor, lowest, highest = self._row(dimension_class)
         command = ipm / length
         used = min(max(command, lowest), highest)
-        decimals = int(regfor) % 10
-        rounded = float(Decimal(repr(used)).quantize(Decimal(1).scaleb(-decimals), ROUND_HALF_UP))
+        rounded = float(half_up(used, int(regfor) % 10))
         return rounded, (ipm if used == command else used * length), regfor
 
     def _row(self, location: int) -> tuple[float, float, float]:
@@ -97,11 +90,8 @@ class FeedCommand:
         elif command < self.minimum:
             command = self.minimum
         else:
-            return self._rounded(command), ipm
-        return self._rounded(command), command * length / gdimul
-
-    def _rounded(self, command: float) -> float:
-        return float(Decimal(repr(command)).quantize(self.quantum, ROUND_HALF_UP))
+            return float(half_up(command, self.decimals)), ipm
+        return float(half_up(command, self.decimals)), command * length / gdimul
 
 
 class RapidCommand:
@@ -114,7 +104,8 @@ class RapidCommand:
     """
 
     def __init__(self, machine: MachineDefinition) -> None:
-        self.feed = FeedCommand(machine)
+        fmt = machine.registers.formats[11]
+        self.decimals = fmt.right if fmt is not None else 0
         self.vector = machine.number_option(36)
         self.rates = tuple(machine.number_option(n) for n in (42, 43, 44))
         self.low_rate = machine.number_option(39)
@@ -142,4 +133,4 @@ class RapidCommand:
         if command > self.maximum:
             command = self.maximum
             ipm = command * length / gdimul
-        return (self.feed._rounded(command) if self.output else None), ipm
+        return (float(half_up(command, self.decimals)) if self.output else None), ipm

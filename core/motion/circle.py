@@ -208,17 +208,19 @@ class CircularMotion:
             axis = u if abs(before[u] - c[u]) > abs(before[v] - c[v]) else v
             if abs(arc.end[axis] - c[axis]) >= abs(before[axis] - c[axis]):
                 circular = False  # apparent reversal at the end point (001 L5355-5383)
-        block = Block(code if circular else Code.LINEAR, arc.record.number)
-        for axis in range(3):
-            block.cells[3 + axis] = departures[axis] * self.step
+        block = Block.motion(
+            code if circular else Code.LINEAR,
+            arc.record.number,
+            tuple(departures),
+            tuple(position.present[:3]),
+            self.step,
+        )
         if circular:
             c = self.centre_moved
             for axis in (u, v):
                 steps = to_steps(abs(c[axis] - position.previous[axis] * self.step), self.step)
                 block.cells[8 + axis] = steps * self.step
             block.radius = arc.radius
-        block.steps = tuple(departures)
-        block.position = tuple(position.present[:3])
         self.emit(block)
         position.previous_part[:] = position.present_part
         position.previous[:] = position.present

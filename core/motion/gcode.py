@@ -48,14 +48,10 @@ class LinearCodes:
         """The code for a block whose largest |departure| is ``largest_steps`` steps."""
         if largest_steps > self.depmax:
             raise FatalError(139, f"departure of {largest_steps} steps exceeds option 4")
-        index = next(
-            (i for i, limit in enumerate(self.limits) if largest_steps < limit),
-            len(self.limits),
-        )
-        for code in self.codes[index:]:
-            if code is not None:
-                return code
-        raise FatalError(138, f"no TABLEG code covers a departure of {largest_steps} steps")
+        code = _covering(self.codes, self.limits, largest_steps)
+        if code is None:
+            raise FatalError(138, f"no TABLEG code covers a departure of {largest_steps} steps")
+        return code
 
 
 # (CLW location, CCLW location, GDIMUL) per radius band (SELGCR, 001 L6076-6170)
@@ -91,8 +87,17 @@ class CircularCodes:
     def select(self, radius: float, clockwise: bool) -> DimensionCode:
         if radius > self.depmax:
             raise FatalError(142, f"radius {radius:g} exceeds option 4")
-        index = next((i for i, limit in enumerate(self.limits) if radius < limit), len(self.limits))
-        for code in self.codes[clockwise][index:]:
-            if code is not None:
-                return code
-        raise FatalError(144, f"no TABLEG code for a radius of {radius:g}")
+        code = _covering(self.codes[clockwise], self.limits, radius)
+        if code is None:
+            raise FatalError(144, f"no TABLEG code for a radius of {radius:g}")
+        return code
+
+
+def _covering(
+    codes: tuple[DimensionCode | None, ...], limits: tuple[float, ...], size: float
+) -> DimensionCode | None:
+    """The smallest range whose limit exceeds ``size`` (the last range has none), moving
+    up past codes the machine lacks: "only those G codes which are actually available"
+    (001 L5959-5962)."""
+    index = next((i for i, limit in enumerate(limits) if size < limit), len(limits))
+    return next((code for code in codes[index:] if code is not None), None)

@@ -22,6 +22,11 @@ from gecent.core.state import PostState
 TWO_AXIS = frozenset({11.0, 101.0, 110.0})  # option 22: the machine has two linear axes
 
 
+def godlta_delta(values: tuple[float, ...]) -> tuple[float, ...]:
+    """GODLTA's increments: dx, dy, dz, or one value along the tool axis z."""
+    return (0.0, 0.0, values[0]) if len(values) == 1 else values[:3]
+
+
 class LinearMotion:
     """The motion element for a non-multiaxis contouring machine."""
 
@@ -64,8 +69,7 @@ class LinearMotion:
     def _godlta(self, record: Motion) -> None:
         """GODLTA adds its increments to the previous point (001 L4103-4128); TRANS is in the
         previous point already. One value moves along the tool axis (z)."""
-        values = record.points[0]
-        delta = (0.0, 0.0, values[0]) if len(values) == 1 else values[:3]
+        delta = godlta_delta(record.points[0])
         previous = self.state.position.previous_part
         tx, ty, tz = self.state.position.translation
         point = tuple(previous[axis] + delta[axis] - (tx, ty, tz)[axis] for axis in range(3))
@@ -86,12 +90,8 @@ class LinearMotion:
         count = segment_count(departures, [self.depmax] * self.axes)
         reached = list(position.previous[:3])
         for part in segments(departures, count) if count > 1 else (tuple(departures),):
-            block = Block(Code.LINEAR, record.number)
             for axis, steps in enumerate(part):
-                block.cells[3 + axis] = steps * self.step
                 reached[axis] += steps
-            block.position = tuple(reached)
-            block.steps = part
-            self.emit(block)
+            self.emit(Block.motion(Code.LINEAR, record.number, part, tuple(reached), self.step))
         position.previous_part[:] = position.present_part
         position.previous[:] = position.present

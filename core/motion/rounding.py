@@ -7,6 +7,8 @@ integers, and the half-step zero test of GOLINE (001 L4268-4290) is "the differe
 
 from __future__ import annotations
 
+from decimal import ROUND_HALF_UP, Decimal
+
 ROUND_UP_FROM = 0.5001  # printed "0.50010" (L4000) and "0.5001" (L5505): 0.4999 step rounds up
 
 
@@ -19,3 +21,9 @@ def to_steps(value: float, step: float) -> int:
 def round_to_step(value: float, step: float) -> float:
     """SRAREC: ``value`` rounded to the step, as a number of the machine's units."""
     return to_steps(value, step) * step
+
+
+def half_up(value: float, decimals: int) -> Decimal:
+    """``value`` rounded half-up to ``decimals`` places, exactly (Python's round() is
+    half-even): register formats and feed commands round so."""
+    return Decimal(repr(value)).quantize(Decimal(1).scaleb(-decimals), ROUND_HALF_UP)

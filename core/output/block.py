@@ -80,6 +80,23 @@ class Block:
     words: tuple[tuple[int, str], ...] = ()
     punch: str | None = None
 
+    @classmethod
+    def motion(
+        cls,
+        code: Code,
+        record: int,
+        departures: tuple[int, ...],
+        reached: tuple[int, ...],
+        step: float,
+    ) -> Block:
+        """A motion block: departures (steps) in cells 3.. and the point reached."""
+        block = cls(code, record)
+        for axis, steps in enumerate(departures):
+            block.cells[3 + axis] = steps * step
+        block.steps = departures
+        block.position = reached
+        return block
+
     @property
     def punched(self) -> bool:
         return self.code not in NOT_PUNCHED

@@ -16,10 +16,10 @@ Each register's formatter is built once per machine, so the hot loop only quanti
 from __future__ import annotations
 
 from dataclasses import dataclass
-from decimal import ROUND_HALF_UP, Decimal
 
 from gecent.core.errors import GecentError
 from gecent.core.machine.regformat import RegisterFormat
+from gecent.core.motion.rounding import half_up
 
 NO_DECIMAL_POINT = frozenset({1, 2, 12, 13, 14, 17})  # NDP locations (001 L24057-24062)
 
@@ -41,7 +41,7 @@ class Formatted:
 class RegisterFormatter:
     """Formats values of one register (one REGSTR/REGFOR location)."""
 
-    __slots__ = ("drop_trailing", "fmt", "letter", "location", "point", "quantum")
+    __slots__ = ("drop_trailing", "fmt", "letter", "location", "point")
 
     def __init__(
         self, location: int, letter: str, fmt: RegisterFormat, *, drop_trailing: bool
@@ -51,11 +51,10 @@ class RegisterFormatter:
         self.fmt = fmt
         self.drop_trailing = drop_trailing and fmt.right > 0
         self.point = fmt.right > 0 and location not in NO_DECIMAL_POINT
-        self.quantum = Decimal(1).scaleb(-fmt.right)
 
     def format(self, value: float) -> Formatted:
         fmt = self.fmt
-        quantised = Decimal(repr(abs(value))).quantize(self.quantum, ROUND_HALF_UP)
+        quantised = half_up(abs(value), fmt.right)
         whole, _, fraction = f"{quantised:.{fmt.right}f}".partition(".")
         whole = whole.lstrip("0")
         if len(whole) > fmt.left:
