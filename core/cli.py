@@ -23,6 +23,7 @@ from gecent.core.families import FAMILIES, MachinePack
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.machine.describe import describe_machine, machine_as_dict
 from gecent.core.output.files import write_atomically
+from gecent.core.output.marks import stand_in
 from gecent.core.output.punch import punch
 from gecent.core.output.tape import tape_image
 from gecent.core.plugins import PluginSet, get_plugins
@@ -228,7 +229,12 @@ def post(
         result.machine, result.blocks, result.partno, cut_minutes=result.cut_minutes
     )
     tape = tape_image(result.blocks)
-    frames = punch(tape.splitlines(), punch_to[0]) if punch_to else None
+    machine = result.machine
+    frames = (
+        punch(tape.splitlines(), punch_to[0], stand_in(machine, 64), stand_in(machine, 65))
+        if punch_to
+        else None
+    )
     stem = Path(input_path)
     write_atomically(tape_path or stem.with_suffix(".tape"), tape.encode("ascii", "replace"))
     write_atomically(listing_path or stem.with_suffix(".lis"), listing.encode("utf-8"))

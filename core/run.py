@@ -26,6 +26,7 @@ from gecent.core.cl.records import (
 )
 from gecent.core.cl.stream import read_cl
 from gecent.core.errors import Diagnostic, InputError, NotYetSupported
+from gecent.core.feed.rapid import RapidTraverse
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.machine.selection import (
     apply_machin_options,
@@ -37,8 +38,12 @@ from gecent.core.motion.circle import CircularMotion
 from gecent.core.motion.linear import LinearMotion, godlta_delta
 from gecent.core.output.block import Block, Code
 from gecent.core.output.element import OutputElement
-from gecent.core.plugins import PluginSet
+from gecent.core.output.marks import leader_block, tmark_cells
+from gecent.core.plugins import PluginSet, get_plugins
+from gecent.core.spindle import SpindleElement
 from gecent.core.state import PostState
+from gecent.core.tool import ToolElement
+from gecent.core.units import UnitScale
 
 
 @dataclass
@@ -54,13 +59,18 @@ class RunResult:
 class Run:
     """The state of one run and the record dispatch (spec 02 §7)."""
 
-    def __init__(self, machine: MachineDefinition) -> None:
+    def __init__(self, machine: MachineDefinition, plugins: PluginSet | None = None) -> None:
+        self.plugins = plugins
         self.result = RunResult(machine=machine)
         self.state = PostState(machine)
         self.finished = False
+        self.units = UnitScale(machine)
         self._output: OutputElement | None = None
         self._motion: LinearMotion | None = None
         self._circle: CircularMotion | None = None
+        self._rapid_traverse: RapidTraverse | None = None
+        self._spindle: SpindleElement | None = None
+        self._tool_element: ToolElement | None = None
         self._statements: dict[str, Callable[[Statement], None]] = {
             "PARTNO": self._partno,
             "PPRINT": self._pprint,
@@ -68,6 +78,12 @@ class Run:
             "MACHIN": self._machin,
             "FEDRAT": self._fedrat,
             "RAPID": self._rapid,
+            "UNITS": self.units.set_units,
+            "LEADER": self._leader,
+            "SPINDL": self._spindl,
+            "TOOLNO": self._tool,
+            "LOADTL": self._tool,
+            "TMARK": self._tmark,
         }
 
     @property
@@ -92,6 +108,30 @@ class Run:
             self._circle = CircularMotion(self.state, self.output.output, self.warn)
         return self._circle
 
+    @property
+    def rapid(self) -> RapidTraverse:
+        if self._rapid_traverse is None:
+            output = self.output
+            self._rapid_traverse = RapidTraverse(
+                self.state, output.output, output.store_m, output.dwell
+            )
+        return self._rapid_traverse
+
+    @property
+    def spindle(self) -> SpindleElement:
+        if self._spindle is None:
+            plugins = self.plugins or get_plugins()
+            self._spindle = SpindleElement(
+                self.state, self.output, lambda n: plugins.get("spindles", n), self.warn
+            )
+        return self._spindle
+
+    @property
+    def tool(self) -> ToolElement:
+        if self._tool_element is None:
+            self._tool_element = ToolElement(self.state, self.output)
+        return self._tool_element
+
     def warn(self, diagnostic: Diagnostic) -> None:
         self.result.diagnostics.append(diagnostic)
         self._text(
@@ -110,6 +150,7 @@ class Run:
             if self.finished:
                 raise InputError("record after FINI", record.where)
             self.state.sequence = record.number
+            record = self.units.record(record)
             if self._circle is not None and self._circle.collecting:
                 if isinstance(record, Motion) and record.subtype is MotionSubtype.CONTINUATION:
                     self._circle.add(record)
@@ -160,45 +201,18 @@ class Run:
         if len(record.points[0]) == 6:
             raise NotYetSupported("multiaxis motion", record.where)
         if record.subtype is not MotionSubtype.FROM:
-            self._test_flags(record)
+            feed = self.state.feed
+            if feed.rapid_requested or feed.rapid_mode:
+                self.rapid.motion(self._path_length(record))
         if self.circle.begin(record):
             return
         self.motion.record(record)
 
     def _rapid(self, statement: Statement) -> None:
-        """RAPID: the next motion record goes at rapid traverse (one-shot, option 109 = 0)."""
+        """RAPID: the next motion record goes at rapid traverse (option 109)."""
         if statement.args:
             raise NotYetSupported(f"RAPID/{statement.args[0]}", statement.where)
-        mode = self.machine.number_option(109)
-        if mode != 0:
-            raise NotYetSupported(f"modal RAPID (option 109 = {mode:g})", statement.where)
-        self.state.feed.rapid_requested = True
-
-    def _test_flags(self, record: Motion) -> None:
-        """TSTFLG (001 L38926-38958): a RAPID request starts rapid traverse for this record
-        (RAPIDO); a one-shot rapid ends at the next record (RAPIDX) (001 L11809-11910)."""
-        feed = self.state.feed
-        machine = self.machine
-        if feed.rapid_requested:
-            feed.rapid_requested = False
-            if feed.rapid_mode:
-                return
-            if machine.number_option(46) != 0:
-                raise NotYetSupported("rapid traverse gear shifting (option 46)", record.where)
-            length = self._path_length(record)
-            feed.rapid_mode = 1
-            if machine.number_option(37) > length:
-                # shorter than the minimum rapid path: the feed range's highest feed
-                feed.rapid_ipm, feed.rapid_low = machine.number_option(39), True
-                return
-            rate = machine.number_option(42)
-            reader = machine.number_option(13)
-            if reader > 0 and length > 0 and rate > length / reader:
-                feed.rapid_ipm = length / reader  # held down by the tape reader: positive
-            else:
-                feed.rapid_ipm = -rate
-        elif feed.rapid_mode == 1:
-            feed.rapid_mode, feed.rapid_ipm, feed.rapid_low = 0, 0.0, False
+        self.rapid.request()
 
     def _path_length(self, record: Motion) -> float:
         """PLENTH: the length of the whole record's path from the previous point."""
@@ -229,23 +243,53 @@ class Run:
             tolerances.ball = abs(corner - tolerances.cutter_radius) < 1e-6
 
     def _fedrat(self, statement: Statement) -> None:
-        """FEDRAT/f[,IPM] or FEDRAT/IPM,f (001 L31113-31212): the feed in IPM, clamped to
-        the machine's range (options 48 and 25); the command is made at output."""
-        numbers = [a for a in statement.args if not isinstance(a, Word)]
-        words = [a.name for a in statement.args if isinstance(a, Word)]
-        if len(numbers) != 1 or any(w != "IPM" for w in words):
-            unbuilt = [w for w in words if w != "IPM"] or ["with several values"]
-            raise NotYetSupported(f"FEDRAT/{unbuilt[0]}", statement.where)
-        feed = float(numbers[0])
-        if feed <= 0:
-            raise InputError(f"FEDRAT needs a positive feedrate, found {feed:g}", statement.where)
+        """FEDRAT/f[,IPM|IPR] or FEDRAT/IPM,f (001 L31113-31212): the feed in machine
+        units per minute (per revolution: times the spindle speed), clamped to the
+        machine's range (options 48 and 25); the command is made at output. MMPM and MMPR
+        are APT IV's; a bare value is in the CL unit and keeps the last mode."""
+        numbers = statement.numbers()
+        words = [a for a in statement.args if isinstance(a, Word)]
+        unbuilt = [w.name for w in words if w.name not in _FEED_UNITS]
+        if unbuilt or len(words) > 1:
+            raise NotYetSupported(f"FEDRAT/{(unbuilt or [words[1].name])[0]}", statement.where)
+        if len(numbers) != 1:
+            raise InputError(
+                f"FEDRAT expects one feedrate value, found {len(numbers)}", statement.where
+            )
+        unit = words[0] if words else None
+        value = self.units.per_minute(numbers[0], unit)
+        if value <= 0:
+            raise InputError(
+                f"FEDRAT needs a positive feedrate, found {numbers[0]:g}", statement.where
+            )
+        feed = self.state.feed
+        if unit is not None:
+            feed.per_revolution = unit.name in ("IPR", "MMPR")
+        if feed.per_revolution:
+            feed.per_revolution_value = value
+            self._feed_per_revolution(statement)
+        else:
+            self._set_feed(value, statement)
+
+    def _feed_per_revolution(self, statement: Statement) -> None:
+        """FEDIPM = FEDIPR x the spindle speed, again at every speed change."""
+        speed = self.state.spindle.speed
+        if speed is None:
+            self.warn(Diagnostic("NO SPINDLE SPEED GIVEN FOR IPR MODE.", statement.where))
+            speed = self.state.spindle.speed = self.machine.number_option(27)
+        self._set_feed(self.state.feed.per_revolution_value * speed, statement)
+
+    def _set_feed(self, feed: float, statement: Statement) -> None:
         low, high = self.machine.number_option(48), self.machine.number_option(25)
         used = min(max(feed, low), high)
-        if used != feed:
+        if statement.major == "FEDRAT" and self.rapid.feedrate(feed, high):
+            pass  # option 109 = +1/+2: the feed above the range is a rapid request
+        elif used != feed:
+            per_minute = "MMPM" if self.units.machine_mm == 1.0 else "IPM"
             self.warn(
                 Diagnostic(
-                    f"FEEDRATE {feed:g} IPM IS OUTSIDE THE MACHINE RANGE {low:g}-{high:g}; "
-                    f"{used:g} IPM USED",
+                    f"FEEDRATE {feed:g} {per_minute} IS OUTSIDE THE MACHINE RANGE "
+                    f"{low:g}-{high:g}; {used:g} {per_minute} USED",
                     statement.where,
                 )
             )
@@ -264,6 +308,30 @@ class Run:
     def _insert(self, statement: Statement) -> None:
         self._text(Block(Code.INSERT, statement.number, statement.text or ""))
 
+    def _spindl(self, statement: Statement) -> None:
+        self.spindle.statement(statement)
+        if self.state.feed.per_revolution:
+            self._feed_per_revolution(statement)
+
+    def _tool(self, statement: Statement) -> None:
+        self.tool.statement(statement)
+
+    def _leader(self, statement: Statement) -> None:
+        """LEADER/L: L inches of leader, in whole cards (CODE -8, 001 L9306-9324)."""
+        numbers = statement.numbers()
+        if len(numbers) != 1 or len(statement.args) != 1:
+            raise InputError("LEADER expects one length in inches", statement.where)
+        # tape is measured in inches whatever the CL units (docs/decisions.md)
+        self._text(leader_block(self.machine, numbers[0], statement.number, statement.where))
+
+    def _tmark(self, statement: Statement) -> None:
+        """TMARK: the end-of-record (rewind stop) code in a block of its own (CODE +8)."""
+        if statement.args:
+            raise NotYetSupported(f"TMARK/{statement.args[0]}", statement.where)
+        block = Block(Code.TMARK, statement.number)
+        tmark_cells(self.machine, block)
+        self.output.output(block)
+
     def _machin(self, statement: Statement) -> None:
         request = parse_machin(statement)
         if request is None:
@@ -281,12 +349,15 @@ class Run:
             # the elements precompute from the machine: rebuild them, keeping what is output
             self.result.machine = self.state.machine = changed
             previous, self._output, self._motion, self._circle = self._output, None, None, None
+            self._rapid_traverse = self._spindle = self._tool_element = None
             if previous is not None:
                 self.output.emitted.extend(previous.emitted)
                 self.output.cut_minutes = previous.cut_minutes
         for note in notes:
             self.warn(note)
 
+
+_FEED_UNITS = ("IPM", "MMPM", "IPR", "MMPR")
 
 _TYPE_NAMES = {"MOTION": "5000", "CIRCLE": "3000", "ARELEM": "6000", "MULTIAX": "9000"}
 
@@ -297,7 +368,7 @@ def post(
     """Select the machine (first pass up to MACHIN, as GEINIT does), then process the file."""
     request, notes = first_machin(read_cl(path, plugins))
     machine = resolve_machine(plugins, machine_override, request)
-    run = Run(machine)
+    run = Run(machine, plugins)
     for note in notes:
         run.warn(note)
     return run.process(read_cl(path, plugins))

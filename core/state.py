@@ -30,11 +30,29 @@ class Feed:
 
     ipm: float = 0.0
     programmed: float | None = None
-    per_revolution: bool = False
+    per_revolution: bool = False  # FRMOD: the programmed feed is per revolution (FEDIPR)
+    per_revolution_value: float = 0.0
     rapid_requested: bool = False
     rapid_mode: int = 0  # FLRPON: 0 off, +1 one-shot, -1 modal
     rapid_ipm: float = 0.0  # FRAPID: 0 = not rapid; negative = rapid; positive = reader-limited
     rapid_low: bool = False  # RAPLOW: a move shorter than option 37 stays in the feed range
+
+
+@dataclass(slots=True)
+class Spindle:
+    """SPNSPD (RPM), SPNDIR (+1 CLW, -1 CCLW, 0 not yet given), FLONSP, CURNGE; and TOOL."""
+
+    speed: float | None = None
+    direction: int = 0
+    on: bool = False
+    range: int = 1
+
+
+@dataclass(slots=True)
+class Tool:
+    """TOOL (the loaded tool number) and FORK (a tool has been loaded)."""
+
+    number: float | None = None
 
 
 @dataclass(slots=True)
@@ -61,6 +79,8 @@ class PostState:
     position: Position = field(default_factory=Position)
     feed: Feed = field(default_factory=Feed)
     pending: Pending = field(default_factory=Pending)
+    spindle: Spindle = field(default_factory=Spindle)
+    tool: Tool = field(default_factory=Tool)
     tolerances: Tolerances = field(default_factory=Tolerances)
     sequence: int = 0  # SEQCTR: the CL record number of the record being processed
     skipping: bool = False  # SKPFLG (OPSKIP)

@@ -135,4 +135,4 @@ def test_corpus_file_stops_at_the_first_unbuilt_statement() -> None:
         "--listing",
         "/dev/null",
     )
-    assert code == 3 and "bohren_1.ncl.8:7 (record 7): error: not yet supported: UNITS" in err
+    assert code == 3 and "bohren_1.ncl.8:16 (record 14): error: not yet supported: CYCLE" in err

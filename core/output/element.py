@@ -19,6 +19,7 @@ from gecent.core.machine.shuffle import cell_map
 from gecent.core.motion.gcode import CircularCodes, LinearCodes
 from gecent.core.output.block import Block, Code
 from gecent.core.output.format import RegisterFormatter
+from gecent.core.output.marks import stand_in
 from gecent.core.state import PostState
 
 CIRCLE_CODES = frozenset(
@@ -34,6 +35,10 @@ CIRCLE_CODES = frozenset(
 MOTION_CODES = frozenset({Code.LINEAR}) | CIRCLE_CODES
 NEVER_OUTPUT = frozenset({15, 19, 20})  # CODE, feed in IPM, speed in RPM: not registers
 ZERO_RULE_CELLS = frozenset({3, 4, 5, 6, 7, 8, 9, 10, 16})  # option 51 (001 L25024-25049)
+# blocks whose cells 3..10 are registers already, not internal axes for SHUFFL
+UNSHUFFLED = frozenset({Code.DWELL})
+# numeric blocks that get TABLEG(5) when they have no G and option 38 = +-1 (001 L24890-24907)
+G_FILLED = frozenset({Code.NONMOTION, Code.AUX_ONLY, Code.END, Code.DWELL})
 
 
 class OutputElement:
@@ -69,9 +74,19 @@ class OutputElement:
             raise FatalError(7, str(exc)) from None
         self.zero_rule = machine.number_option(51)
         self.suppress_g = machine.number_option(38) == 0
+        dwell_g = machine.tableg[5]
+        self.fill_g: float | Absent = (
+            float(dwell_g)
+            if machine.number_option(38) in (1.0, -1.0) and dwell_g is not ABSENT
+            else ABSENT
+        )
         self.suppress_f = machine.number_option(107) in (1.0, 2.0)
         self.previous_g: float | Absent = ABSENT
         self.previous_f: float | Absent = ABSENT
+        self.tmark_code = stand_in(machine, 65)
+        n_format = registers.formats[1]
+        # SEQLIM: the largest N the format holds (999 for format 30)
+        self.sequence_limit = 10**n_format.left - 1 if n_format is not None else 1 << 62
         self.emitted: list[Block] = []
         self.diagnostics: list[Diagnostic] = []
         self._assumed_feed = False
@@ -80,16 +95,49 @@ class OutputElement:
 
     def output(self, block: Block) -> None:
         state = self.state
+        if block.code is Code.TMARK:
+            self._tmark(block)
+            return
         block.cells[15] = float(int(block.code))
         sequence = block.record if block.record is not None else state.sequence
+        if sequence > self.sequence_limit:
+            sequence %= self.sequence_limit  # "N = N modulus SEQLIM" (001 L9117-9126)
         block.cells[1] = float(-sequence if state.skipping else sequence)
         if block.code in MOTION_CODES:
             self._motion(block)
+        elif block.code in G_FILLED and block.cells[2] is ABSENT:
+            block.cells[2] = self.fill_g
         block.cells[12] = state.pending.spindle
         block.cells[14] = state.pending.m_code
         state.pending.spindle = ABSENT
         state.pending.m_code = ABSENT
         self._emit(block)
+
+    def _tmark(self, block: Block) -> None:
+        """No N: the end-of-record code stands in its place; the pending S and M wait for
+        the next block; an option-98 F is punched but not printed (001 L9298-9304)."""
+        block.cells[15] = float(int(block.code))
+        words = self._words(block, suppress=False)
+        block.words = tuple((loc, printed) for loc, _, printed, _ in words if loc != 11)
+        block.punch = self.tmark_code + "".join(letter + punched for _, letter, _, punched in words)
+        self.emitted.append(block)
+
+    def dwell(self, seconds: float) -> Block:
+        """A dwell block: G = TABLEG(5), the time divided by option 56 in the option-57
+        register (001 L16315-16330, L25109-25140)."""
+        machine = self.state.machine
+        block = Block(Code.DWELL)
+        dwell_g = machine.tableg[5]
+        block.cells[2] = ABSENT if dwell_g is ABSENT else float(dwell_g)
+        block.cells[int(machine.number_option(57))] = seconds / (machine.number_option(56) or 1.0)
+        return block
+
+    def store_m(self, code: float) -> None:
+        """STOREM (001 L38041-38087): one M code waits for the next block; a second one
+        first goes out in a block of its own with the waiting one."""
+        if self.state.pending.m_code is not ABSENT:
+            self.output(Block(Code.AUX_ONLY))
+        self.state.pending.m_code = code
 
     def _motion(self, block: Block) -> None:
         assert block.steps is not None
@@ -134,7 +182,8 @@ class OutputElement:
         if block.code is Code.FROM:  # printed in the absolute columns only, never punched
             self.emitted.append(block)
             return
-        self._shuffle(block)
+        if block.code not in UNSHUFFLED:
+            self._shuffle(block)
         words = self._words(block, suppress=block.code in MOTION_CODES)
         block.words = tuple((location, printed) for location, _, printed, _ in words)
         if block.punched:

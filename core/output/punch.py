@@ -25,14 +25,24 @@ def table(code: str) -> dict[str, int]:
     return {str(k): int(v) for k, v in tomllib.loads(raw.decode("utf-8"))[code].items()}
 
 
-def punch(lines: Iterable[str], code: str) -> bytes:
-    """The frames of a tape image; a character the code cannot punch is an error naming it."""
+def punch(lines: Iterable[str], code: str, leader: str = "(", tmark: str = "=") -> bytes:
+    """The frames of a tape image; a character the code cannot punch is an error naming it.
+
+    Two stand-ins of the machine's options 64 and 65 are punched as control codes: a line
+    made only of the leader stand-in is leader (no end of block), and the TMARK stand-in at
+    the start of a line is the end-of-record (rewind stop) code."""
     if code not in CODES:
         raise InputError(f"unknown tape code {code!r} (eia or ascii)")
     codes = table(code)
     end_of_block = codes["EOB"]
     frames = bytearray()
     for number, line in enumerate(lines, start=1):
+        if line and line.strip(leader) == "":
+            frames.extend(bytes([codes["LEADER"]]) * len(line))
+            continue
+        if line.startswith(tmark):
+            frames.append(codes["REWIND_STOP"])
+            line = line[1:]
         for character in line:
             if character in NOT_PUNCHED:
                 continue
@@ -46,21 +56,37 @@ def punch(lines: Iterable[str], code: str) -> bytes:
     return bytes(frames)
 
 
-def unpunch(frames: bytes, code: str) -> list[str]:
-    """Read frames back into tape image lines (for tests and for checking a tape)."""
+def unpunch(frames: bytes, code: str, leader: str = "(", tmark: str = "=") -> list[str]:
+    """Read frames back into tape image lines (for tests and for checking a tape).
+
+    A run of leader frames becomes a line of the leader stand-in; the end-of-record code
+    at the start of a block becomes the TMARK stand-in unless it is a character of this
+    code (ASCII's rewind stop is "%")."""
     codes = table(code)
     characters = {v: k for k, v in reversed(list(codes.items())) if len(k) == 1}
-    end_of_block = codes["EOB"]
+    end_of_block, leader_frame = codes["EOB"], codes["LEADER"]
+    rewind_stop = codes["REWIND_STOP"]
     lines: list[str] = []
     current: list[str] = []
+    leading = 0
     for frame in frames:
+        if frame == leader_frame and not current:
+            leading += 1
+            continue
+        if leading:
+            lines.append(leader * leading)
+            leading = 0
         if frame == end_of_block:
             lines.append("".join(current))
             current = []
+        elif frame == rewind_stop and not current and frame not in characters:
+            current.append(tmark)
         elif frame in characters:
             current.append(characters[frame])
         else:
             raise ValueError(f"frame {frame:#04x} is not a {code.upper()} character")
+    if leading:
+        lines.append(leader * leading)
     if current:
         raise ValueError("the tape ends inside a block (no end-of-block code)")
     return lines

@@ -30,7 +30,8 @@ def tape_image(blocks: Iterable[Block]) -> str:
     return "".join(f"{line}\n" for line in lines)
 
 
-def tape_feet(lines: Iterable[str]) -> float:
-    """Tape length: one frame per character plus the end-of-block frame."""
-    frames = sum(len(line) + 1 for line in lines)
+def tape_feet(lines: Iterable[str], leader: str = "(") -> float:
+    """Tape length: one frame per character plus the end-of-block frame (none after
+    leader)."""
+    frames = sum(len(line) + (0 if line and line.strip(leader) == "" else 1) for line in lines)
     return frames / FRAMES_PER_INCH / 12.0

@@ -18,11 +18,15 @@ from gecent.core.machine.definition import MachineDefinition
 from gecent.core.machine.shuffle import cell_map
 from gecent.core.output.block import TEXT_CODES, Block, Code
 from gecent.core.output.format import NO_DECIMAL_POINT
+from gecent.core.output.marks import stand_in
 from gecent.core.output.tape import tape_feet, tape_lines
 
 ABSOLUTE_AXES = ((3, "X"), (4, "Y"), (5, "Z"), (6, "A"), (7, "B"), (18, "C"))
 FIRST_COLUMN = 3  # column 2 holds the OPSKIP "/" (001 L16394-16397)
-GAP = 2
+# Column 1 is the FORTRAN carriage-control character, not a print position: a line of
+# option 160 print positions is option 160 + 1 characters long (docs/decisions.md).
+CARRIAGE_CONTROL = 1
+GAP = 1  # the least space between two fields; the spare positions are added equally
 
 
 @dataclass(frozen=True, slots=True)
@@ -43,8 +47,10 @@ def _format_width(machine: MachineDefinition, location: int) -> int:
 def columns(machine: MachineDefinition) -> list[Column]:
     """The line layout: incremental registers in output order, then the absolute (or
     operator) axes, F-IPM, S-RPM and, with option 143 != 0, the CL record number (CALCP1,
-    001 L9478-9582). Fields are two blanks apart from column 3; a field is as wide as its
-    format or its heading, whichever is wider."""
+    001 L9454-9582). A field is as wide as its format or its heading, whichever is wider;
+    fields start at column 3 at least one blank apart, spread equally over the option-160
+    print positions. A line that does not fit drops S-RPM, then F-IPM; if it still does
+    not fit GEOUT1 cannot be used (GEOUT2, not built yet)."""
     registers = machine.registers
     order = [k for k in (machine.output_order or range(1, 31)) if k not in (15, 19, 20)]
     wanted: list[Column] = [
@@ -62,17 +68,41 @@ def columns(machine: MachineDefinition) -> list[Column]:
     wanted.append(Column("S-RPM", "S-RPM", 7))
     if machine.number_option(143) != 0:
         wanted.append(Column("CLREC", "CLREC", 5))
+    limit = int(machine.number_option(160))
+    for optional in ("S-RPM", "F-IPM"):  # dropped in this order when the line is too long
+        if _needed(wanted) > limit:
+            wanted = [c for c in wanted if c.key != optional]
+    needed = _needed(wanted)
+    if needed > limit:
+        raise NotYetSupported(
+            f"GEOUT2 printout: GEOUT1 CANNOT BE USED. (its line needs {needed} print "
+            f"positions, option 160 gives {limit})"
+        )
+    # the spare positions are shared out equally between the fields (001 L9543-9546)
+    gap = GAP + (limit - needed) // max(1, len(wanted) - 1)
     placed: list[Column] = []
     at = FIRST_COLUMN
     for column in wanted:
         width = max(column.width, len(column.heading))
         placed.append(Column(column.key, column.heading, width, at))
-        at += width + GAP
+        at += width + gap
     return placed
 
 
+def _needed(wanted: list[Column]) -> int:
+    widths = [max(c.width, len(c.heading)) for c in wanted]
+    return FIRST_COLUMN - 1 - CARRIAGE_CONTROL + sum(widths) + GAP * (len(widths) - 1)
+
+
 def heading(machine: MachineDefinition) -> str:
-    return _place([(c, c.heading) for c in columns(machine)])
+    """Each title centred over its field, as SETLIN places it at (NIP + NFP) / 2
+    (001 L9548-9568)."""
+    line = ""
+    for column in columns(machine):
+        centre = column.start + (column.width - 1) // 2
+        first = centre - (len(column.heading) - 1) // 2
+        line = line.ljust(first - 1) + column.heading
+    return line.rstrip()
 
 
 def _place(fields: list[tuple[Column, str]]) -> str:
@@ -91,7 +121,12 @@ PRINTABLE = frozenset(
     {
         Code.FROM,
         Code.LINEAR,
+        Code.NONMOTION,
+        Code.AUX_ONLY,
+        Code.DWELL,
         Code.G_ONLY,
+        Code.END,
+        Code.TMARK,
         Code.CIRCLE_XY_CLW,
         Code.CIRCLE_XY_CCLW,
         Code.CIRCLE_ZX_CLW,
@@ -110,7 +145,7 @@ class Geout1:
     template: str = "geout1.j2"
 
     def line(self, machine: MachineDefinition, layout: list[Column], block: Block) -> str:
-        if block.code in TEXT_CODES:
+        if block.code in TEXT_CODES or block.code is Code.LEADER:
             return block.text or ""
         if block.code not in PRINTABLE:
             raise NotYetSupported(f"GEOUT1 line for a CODE {int(block.code)} block")
@@ -138,6 +173,8 @@ class Geout1:
         text = _place(fields)
         if block.code is Code.FROM:
             text = "FROM" + text[4:]
+        elif block.code is Code.TMARK:
+            text = "TMARK" + text[5:]
         if block.punch is not None and block.punch.startswith("/"):
             text = text[:1] + "/" + text[2:]
         return text
@@ -170,7 +207,7 @@ class Geout1:
                 heading=heading(machine),
                 cut_minutes=cut_minutes,
                 dwell_minutes=dwell_minutes,
-                tape_feet=tape_feet(tape_lines(blocks)),
+                tape_feet=tape_feet(tape_lines(blocks), stand_in(machine, 64)),
             )
         )
 

@@ -1,0 +1,122 @@
+"""Rapid traverse on a contouring machine: RAPID, RAPIDO, RAPIDX and the option-109 modes
+(manual §4.1.4, 001 L11809-11910; TSTFLG L38926-38958; option 109 L25698-25719).
+
+RAPID only raises a request (RAPFLG). The next motion record enters rapid (RAPIDO): a move
+shorter than option 37 stays in the feed range at option 39's feed; otherwise the gears
+shift into rapid (option 46) and the block is marked rapid at option 42, or at the tape
+reader's limit (option 13). A one-shot rapid ends at the following motion record, a modal
+one at a FEDRAT (RAPIDX), shifting the gears back.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+from gecent.core.absent import ABSENT
+from gecent.core.output.block import Block
+from gecent.core.state import PostState
+
+ONE_SHOT, MODAL = 1, -1
+
+# TABLEM cells of the gear-shift M codes (001 L23165-23227): X, Y, Z into rapid and back.
+_INTO_RAPID = (42, 44, 46)
+_BACK_TO_FEED = (43, 45, 47)
+
+
+class RapidTraverse:
+    def __init__(
+        self,
+        state: PostState,
+        emit: Callable[[Block], None],
+        store_m: Callable[[float], None],
+        dwell: Callable[[float], Block],
+    ) -> None:
+        machine = state.machine
+        self.state = state
+        self.emit = emit
+        self.store_m = store_m
+        self.dwell = dwell
+        self.mode = machine.number_option(109)
+        self.shifting = machine.number_option(46)
+        self.minimum_path = machine.number_option(37)
+        self.range_top = machine.number_option(39)
+        self.rapid_rate = machine.number_option(42)
+        self.reader_time = machine.number_option(13)
+        self.catch_up = machine.number_option(16)
+        self.into_dwell = machine.number_option(81)
+        self.back_dwell = machine.number_option(82)
+        axes = (0,) if self.shifting < 0 else (0, 1, 2)
+        self.into_codes = _codes(machine.tablem, _INTO_RAPID, axes)
+        self.back_codes = _codes(machine.tablem, _BACK_TO_FEED, axes)
+
+    @property
+    def modal(self) -> bool:
+        return self.mode in (-1.0, 2.0)
+
+    def request(self) -> None:
+        """RAPID: the next motion record goes at rapid traverse."""
+        self.state.feed.rapid_requested = True
+
+    def feedrate(self, programmed: float, maximum: float) -> bool:
+        """FEDRAT under option 109: True when this feedrate means rapid (+1, +2: above the
+        range's maximum). A FEDRAT ends a modal rapid (-1: any; +2: one within range)."""
+        above = self.mode in (1.0, 2.0) and programmed > maximum
+        if above:
+            self.request()
+        elif self.state.feed.rapid_mode == MODAL:
+            self.leave()
+        return above
+
+    def motion(self, path_length: float) -> None:
+        """TSTFLG, before a motion record is processed."""
+        feed = self.state.feed
+        if feed.rapid_requested:
+            feed.rapid_requested = False
+            if feed.rapid_mode:
+                return  # already in rapid: no redundant gear shift (001 L11871-11876)
+            self.enter(path_length)
+        elif feed.rapid_mode == ONE_SHOT:
+            self.leave()
+
+    def enter(self, path_length: float) -> None:
+        """RAPIDO."""
+        feed = self.state.feed
+        feed.rapid_mode = MODAL if self.modal else ONE_SHOT
+        if self.minimum_path > path_length:
+            # too short to be worth a gear shift: the feed range's highest feed (001 L11878-11884)
+            feed.rapid_ipm, feed.rapid_low = self.range_top, True
+            return
+        self._shift(self.into_codes, self.into_dwell)
+        rate = self.rapid_rate
+        reader = self.reader_time
+        if reader > 0 and path_length > 0 and rate > path_length / reader:
+            feed.rapid_ipm = path_length / reader  # held down by the tape reader: positive
+        else:
+            feed.rapid_ipm = -rate
+
+    def leave(self) -> None:
+        """RAPIDX: back to the feed range; FEDIPM was never changed, so the feed returns."""
+        feed = self.state.feed
+        shifted = not feed.rapid_low
+        feed.rapid_mode, feed.rapid_ipm, feed.rapid_low = 0, 0.0, False
+        if shifted:
+            self._shift(self.back_codes, self.back_dwell)
+
+    def _shift(self, codes: tuple[float, ...], dwell: float) -> None:
+        """The gear-shift blocks (001 L24979-24995, L24560-24569, L25367-25380; sample
+        printout L10362-10383): a catch-up dwell, the M codes, and the shift dwell, which
+        carries the last M code; without a shift dwell the last M rides in the motion."""
+        if self.shifting == 0 or not codes:
+            return
+        if self.catch_up > 0:
+            self.emit(self.dwell(self.catch_up))
+        for code in codes:
+            self.store_m(code)
+        if dwell > 0:
+            self.emit(self.dwell(dwell))
+
+
+def _codes(tablem: tuple[object, ...], cells: tuple[int, ...], axes: tuple[int, ...]) -> tuple[
+    float, ...
+]:
+    return tuple(float(tablem[cells[a]]) for a in axes if tablem[cells[a]] is not ABSENT)  # type: ignore[arg-type]

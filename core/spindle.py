@@ -1,0 +1,179 @@
+"""The spindle: SPINDL with RPM, ON and OFF (manual §4.5, subroutine SPINDL 001
+L37566-37637; options 19, 27, 34, 89, 127, 129), read in docs/research/spindle-tool.md.
+
+The kernel keeps the spindle's state and its M codes; the spindle-type plugin selected by
+option 19 turns a speed into the S command (``select``). An RPM SPINDL outputs a non-motion
+block of its own at once, carrying S and, when the spindle starts or reverses, the
+direction M code (TABLEM 4 CLW, 5 CCLW); OFF outputs TABLEM(6) (or S0 under option 127).
+A machine without an S register (REGFOR(12) = 0) gets no S word and no speed comment.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from typing import Protocol, runtime_checkable
+
+from gecent.core.absent import ABSENT
+from gecent.core.cl.records import Statement, Word
+from gecent.core.errors import Diagnostic, InputError, NotYetSupported, SourcePosition
+from gecent.core.machine.definition import MachineDefinition
+from gecent.core.output.block import Block, Code
+from gecent.core.output.element import OutputElement
+from gecent.core.state import PostState
+
+CLW, CCLW = 1, -1
+_DIRECTION_WORDS = {"CLW": CLW, "CCLW": CCLW}
+_M_CELL = {CLW: 4, CCLW: 5}
+_OFF_CELL = 6
+NOT_AVAILABLE = "REQUESTED MISCELLANEOUS FUNCTION CODE IS NOT AVAILABLE ON THIS MACHINE"
+
+
+@dataclass(frozen=True, slots=True)
+class SpindleSelection:
+    """What a spindle type makes of a requested speed: the speed the spindle will turn,
+    the S command, the range, and the manual's comments."""
+
+    speed: float
+    command: float
+    range: int = 1
+    comments: tuple[str, ...] = field(default=())
+
+
+@runtime_checkable
+class SpindleType(Protocol):
+    number: int
+    name: str
+    section: str
+
+    def select(
+        self, machine: MachineDefinition, speed: float, requested_range: int | None
+    ) -> SpindleSelection: ...
+
+
+class SpindleElement:
+    """SPINDL on a single-head machine."""
+
+    def __init__(
+        self,
+        state: PostState,
+        output: OutputElement,
+        spindle_type: Callable[[int], SpindleType | None],
+        warn: Callable[[Diagnostic], None],
+    ) -> None:
+        machine = state.machine
+        self.state = state
+        self.output = output
+        self.warn = warn
+        self.has_s_register = machine.registers.formats[12] is not None
+        self.type_number = int(machine.number_option(19))
+        self.spindle_type = spindle_type(self.type_number) if self.has_s_register else None
+
+    def statement(self, statement: Statement) -> None:
+        words = [a.name for a in statement.args if isinstance(a, Word)]
+        unbuilt = [w for w in words if w not in ("RPM", "CLW", "CCLW", "RANGE", "ON", "OFF")]
+        if unbuilt:
+            raise NotYetSupported(f"SPINDL/{unbuilt[0]}", statement.where)
+        if "OFF" in words:
+            if len(statement.args) != 1:
+                raise InputError("SPINDL/OFF takes nothing else", statement.where)
+            self._off(statement)
+            return
+        speed, requested_range = _speed_and_range(statement)
+        self._on(statement, speed, requested_range, words)
+
+    def _on(
+        self,
+        statement: Statement,
+        speed: float | None,
+        requested_range: int | None,
+        words: list[str],
+    ) -> None:
+        machine = self.state.machine
+        spindle = self.state.spindle
+        where = statement.where
+        if speed is None:
+            speed = spindle.speed
+        if speed is None:
+            speed = machine.number_option(27)
+            self.warn(Diagnostic("OPTION VALUE IS ASSUMED FOR THE SPINDLE SPEED", where))
+        if speed < 0:
+            raise InputError(f"SPINDL expects a speed >= 0, found {speed:g}", where)
+        directions = [_DIRECTION_WORDS[w] for w in words if w in _DIRECTION_WORDS]
+        if len(directions) > 1:
+            raise InputError("SPINDL takes one of CLW and CCLW", where)
+        direction = directions[0] if directions else spindle.direction
+        if direction == 0:
+            assumed = machine.number_option(34)
+            if assumed == 0:
+                raise InputError(
+                    "SPINDL needs CLW or CCLW: option 34 = 0 assumes no direction", where
+                )
+            direction = CLW if assumed > 0 else CCLW
+        reversed_ = spindle.on and direction != spindle.direction
+        if reversed_:
+            self.warn(Diagnostic("WARNING--SPINDLE DIRECTION HAS CHANGED", where))
+            delay = machine.number_option(89)
+            if delay:
+                self._store(_OFF_CELL, where)
+                self.output.output(self.output.dwell(delay))
+        if requested_range is not None and requested_range > machine.number_option(7):
+            self.warn(Diagnostic("RANGE REQUESTED IS NOT AVAILABLE, USE HIGHEST", where))
+            requested_range = int(machine.number_option(7))
+        if not spindle.on or reversed_:
+            self._store(_M_CELL[direction], where)
+        spindle.speed, spindle.direction, spindle.on = speed, direction, True
+        if self.has_s_register:
+            if self.spindle_type is None:
+                raise NotYetSupported(f"spindle type {self.type_number} (option 19)", where)
+            selection = self.spindle_type.select(machine, speed, requested_range)
+            for comment in selection.comments:
+                self.warn(Diagnostic(comment, where))
+            spindle.speed, spindle.range = selection.speed, selection.range
+            self.state.pending.spindle = selection.command
+        self.output.output(Block(Code.NONMOTION, statement.number))
+
+    def _off(self, statement: Statement) -> None:
+        machine = self.state.machine
+        spindle = self.state.spindle
+        spindle.on = False
+        if machine.number_option(129) == 0:
+            spindle.range = 1
+        if machine.number_option(127) == 1:
+            if not self.has_s_register:
+                raise NotYetSupported("spindle off by S0 (option 127 = 1) without an S register")
+            self.state.pending.spindle = 0.0
+            self.output.output(Block(Code.NONMOTION, statement.number))
+            return
+        self._store(_OFF_CELL, statement.where)
+        self.output.output(Block(Code.AUX_ONLY, statement.number))
+
+    def _store(self, cell: int, where: SourcePosition) -> None:
+        code = self.state.machine.tablem[cell]
+        if code is ABSENT:
+            self.warn(Diagnostic(NOT_AVAILABLE, where))
+            return
+        self.output.store_m(float(code))
+
+
+def _speed_and_range(statement: Statement) -> tuple[float | None, int | None]:
+    """The speed is the first number not taken by RANGE,r; minor words may come before or
+    after it (SPINDL/10,RPM,CLW or SPINDL/RPM,10,CLW as Creo writes it)."""
+    speed: float | None = None
+    requested_range: int | None = None
+    args = statement.args
+    index = 0
+    while index < len(args):
+        arg = args[index]
+        if isinstance(arg, Word) and arg.name == "RANGE":
+            if index + 1 >= len(args) or isinstance(args[index + 1], Word):
+                raise InputError("SPINDL RANGE expects a range number", statement.where)
+            requested_range = int(float(args[index + 1]))  # type: ignore[arg-type]
+            index += 2
+            continue
+        if not isinstance(arg, Word):
+            if speed is not None:
+                raise InputError("SPINDL expects one speed", statement.where)
+            speed = float(arg)
+        index += 1
+    return speed, requested_range

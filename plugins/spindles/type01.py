@@ -1,0 +1,58 @@
+"""Spindle type 1: EIA 3-digit code number, variable spindle (manual §4.5.2,
+001 L14635-14660; TYPE01 L39133-39160; EIACOM L30854-30904).
+
+Any speed between the minimum SRTAB(1) and the maximum SRTAB(2); no ranges are coded. The S
+command is the EIA "magic three" of the speed (137.2 RPM -> S614). A speed outside the
+table gets the nearest listed speed, with the manual's comments 80 (below) and 63 (above)
+(L14588-14590, L30766-30777; docs/decisions.md).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from gecent.core.errors import MachineDefinitionError
+from gecent.core.feed.magic3 import magic3
+from gecent.core.hookspecs import Register, hookimpl
+from gecent.core.machine.definition import MachineDefinition
+from gecent.core.spindle import SpindleSelection
+
+LOWEST_OUTPUT = "LOWEST SPEED IN RANGE IS OUTPUT."
+NOT_FOUND = "SPINDLE SPEED COULD NOT BE FOUND."
+
+
+@dataclass(frozen=True)
+class EiaThreeDigitSpindle:
+    number: int = 1
+    name: str = "EIA 3-digit code number (variable spindle)"
+    section: str = "§4.5.2"
+
+    def limits(self, machine: MachineDefinition) -> tuple[float, float]:
+        speeds = machine.spindle_speeds()
+        if len(speeds) < 2 or not 0 < speeds[0] <= speeds[1] <= 9999:
+            raise MachineDefinitionError(
+                machine.origin,
+                "spindle_table",
+                "speeds",
+                "spindle type 1 needs SRTAB(1) = minimum and SRTAB(2) = maximum speed, "
+                f"0 < minimum <= maximum <= 9999 RPM; found {list(speeds[:2])}",
+            )
+        return speeds[0], speeds[1]
+
+    def select(
+        self, machine: MachineDefinition, speed: float, requested_range: int | None
+    ) -> SpindleSelection:
+        low, high = self.limits(machine)
+        comments: tuple[str, ...] = ()
+        if speed < low:
+            speed, comments = low, (LOWEST_OUTPUT,)
+        elif speed > high:
+            speed, comments = high, (NOT_FOUND,)
+        code = magic3(speed)
+        assert code is not None  # the limits keep the speed within magic three's range
+        return SpindleSelection(speed, float(code), 1, comments)
+
+
+@hookimpl
+def register_spindle_types(register: Register) -> None:
+    register(EiaThreeDigitSpindle())
