@@ -25,7 +25,7 @@ from gecent.core.cl.records import (
     Word,
 )
 from gecent.core.cl.stream import read_cl
-from gecent.core.errors import Diagnostic, InputError, NotYetSupported
+from gecent.core.errors import Diagnostic, InputError, NotYetSupported, SourcePosition
 from gecent.core.feed.rapid import RapidTraverse
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.machine.selection import (
@@ -38,6 +38,7 @@ from gecent.core.motion.circle import CircularMotion
 from gecent.core.motion.linear import LinearMotion, godlta_delta
 from gecent.core.output.block import Block, Code
 from gecent.core.output.element import OutputElement
+from gecent.core.output.format import FormatOverflow
 from gecent.core.output.marks import leader_block, tmark_cells
 from gecent.core.plugins import PluginSet, get_plugins
 from gecent.core.spindle import SpindleElement
@@ -64,6 +65,7 @@ class Run:
         self.result = RunResult(machine=machine)
         self.state = PostState(machine)
         self.finished = False
+        self._file = ""
         self.units = UnitScale(machine)
         self._output: OutputElement | None = None
         self._motion: LinearMotion | None = None
@@ -145,7 +147,16 @@ class Run:
         self.output.emitted.append(block)
 
     def process(self, records: Iterator[Record]) -> RunResult:
+        try:
+            return self._process(records)
+        except FormatOverflow as overflow:
+            if overflow.where is not None:  # the element knows the record, the run the file
+                overflow.where = SourcePosition(self._file, None, None, overflow.where.record)
+            raise
+
+    def _process(self, records: Iterator[Record]) -> RunResult:
         for record in records:
+            self._file = record.file
             self.result.records += 1
             if self.finished:
                 raise InputError("record after FINI", record.where)

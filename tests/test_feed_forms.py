@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import pytest
+from gecent.core.absent import ABSENT
 from gecent.core.errors import InputError
 from gecent.core.feed.contour import INVERSE_TIME
 from gecent.core.feed.magic3 import decode, magic3
@@ -114,3 +115,46 @@ def test_inverse_time_rows_cover_the_manual_table() -> None:
     assert len(INVERSE_TIME) == 16
     assert INVERSE_TIME[(-3, 13)] == (40.0, 1.0, 9999.0)
     assert INVERSE_TIME[(-4, 15)] == (47.0, 0.00001, 0.0999999)
+
+
+def test_e17_g_code_segmentation_keeps_the_programmed_feed() -> None:
+    """E17 (001 L11920-11970): dX 30, dY 40 at 300 IPM needs G10 (D = 100): Fc = 600 > 500.
+    Without option 170 the command is held to 500 and the feed drops to 250 IPM; with it
+    the move is cut into 5 segments of (6, 8) for G01 (D = 10): Fc = 300, the full 300 IPM
+    (4 segments would give exactly 10, not under it)."""
+    program = ["FROM/0,0,0", "FEDRAT/300", "GOTO/30,40,0"]
+    base = {4: 99.9999, 25: 500.0, 26: 1.0}
+    clamped = post(program, _machine(base, WIDE))
+    motion = [b for b in clamped.blocks if b.punch]
+    assert [b.punch for b in motion] == ["N003G10X+30Y+40F500"]
+    assert motion[0].cells[19] == pytest.approx(250.0)
+    segmented = post(program, _machine({**base, 170: 1.0}, WIDE))
+    motion = [b for b in segmented.blocks if b.punch]
+    assert [b.punch for b in motion] == ["N003G01X+06Y+08F300"] + ["N003X+06Y+08"] * 4
+    assert {b.cells[19] for b in motion} == {300.0}
+
+
+def test_e20_feedrate_multiplier_constant_in_inverse_time() -> None:
+    """E20 (001 L12481-12511): inverse time, dX = dY = 0.01 at 30 IPM in a G11 block (row
+    -1/G11, FCOMAX 999.9): FCOM = 30 / 0.014142 = 2121.3 > 999.9. The manual "adopts" c = 5
+    (FCOM 424, I = J = 0.05) and calls c arbitrary; gecent takes the smallest whole c that
+    brings the command to the maximum or below, c = 3: FCOM 707.1, I = J = 0.03 (the
+    relations of the example hold: FCOM x c = 2121.3, I = dX x c)."""
+    machine = _machine({10: -1.0}, {11: 33.0})
+    result = post(["FROM/0,0,0", "FEDRAT/30", "GOTO/0.01,0.01,0"], machine)
+    motion = next(b for b in result.blocks if b.punch)
+    assert motion.cells[11] == pytest.approx(707.1)
+    assert (motion.cells[8], motion.cells[9]) == (pytest.approx(0.03), pytest.approx(0.03))
+    assert motion.cells[19] == 30.0  # the programmed feed is kept
+    assert float(motion.cells[11]) * 3 == pytest.approx(30 / (2 * 0.01**2) ** 0.5, abs=0.2)
+    assert motion.punch == "N003G11X+001Y+001I003J003F7071"
+
+
+def test_multiplier_products_that_do_not_fit_fall_back_to_the_clamp() -> None:
+    """I, J, K must hold the departures times c (001 L12512-12529): 9 in x c = 2 exceeds
+    the standard I format 14 (9.9999), so the command is limited instead."""
+    machine = _machine({4: 99.9999, 25: 500.0}, WIDE)
+    result = post(["FROM/0,0,0", "FEDRAT/500", "GOTO/9,0,0"], machine)
+    motion = next(b for b in result.blocks if b.punch)
+    assert motion.cells[8] is ABSENT
+    assert motion.punch == "N003G01X+09F500"  # 10 x 500 / 9 = 555.6 -> 500

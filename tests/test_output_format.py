@@ -61,5 +61,5 @@ def test_positioning_keeps_trailing_zeros() -> None:
 
 
 def test_overflow_is_refused() -> None:
-    with pytest.raises(FormatOverflow, match=r"does not fit register format -1\.4"):
+    with pytest.raises(FormatOverflow, match=r"does not fit register format -14"):
         formatter(3, "X", -14).format(10.0)

@@ -85,7 +85,7 @@ def test_w12_zero_departure_at_the_start_goes_linear() -> None:
         )
     )
     assert lines == [
-        "N004G01X+0002F500",
+        "N004G01X+0002I02F500",
         "N004G02X+3Y-3J3F033",
         "N004X-06Y-18I3",
     ]

@@ -77,16 +77,30 @@ def test_a_move_of_no_whole_step_outputs_nothing() -> None:
     """001 L4283-4290: every departure under half a step: no block, the previous point stays,
     so two sub-step moves that add up to a step do move."""
     lines = tape(["FROM/0,0,0", "FEDRAT/10", "GOTO/0.00004,0,0", "GOTO/0.00008,0,0"])
-    assert lines == ["N004G01X+00001F500"]  # 10 * 10 IPM / 0.0001 in, clamped to option 24
+    # 10 * 10 IPM / 0.0001 in = 1e6: multiplier c = 2000 (option 26 = 0), I = 0.2
+    assert lines == ["N004G01X+00001I02F500"]
 
 
 def test_feed_command_is_clamped_to_option_24() -> None:
     """Fc = GDIMUL * FIPM / S: 10 * 100 / 0.0001 far above option 24 = 500 -> 500, and the
-    absolute printout gets the feed that command really gives (001 L10799-10815)."""
-    result = post(["FROM/0,0,0", "FEDRAT/100", "GOTO/0.0001,0,0"])
+    absolute printout gets the feed that command really gives (001 L10799-10815). Option
+    26 = 1: no feedrate multiplier."""
+    result = post(
+        ["FROM/0,0,0", "FEDRAT/100", "GOTO/0.0001,0,0"], standard_machine().with_options({26: 1.0})
+    )
     motion = next(b for b in result.blocks if b.punch and "X" in b.punch)
     assert motion.punch == "N003G01X+00001F500"
     assert motion.cells[19] == 500 * 0.0001 / 10
+
+
+def test_feedrate_multiplier_keeps_the_programmed_feed() -> None:
+    """Option 26 = 0, the standard (001 L12440-12529): the command 10 * 100 / 0.0001 is
+    divided by the smallest whole c that brings it to option 24 (c = 20000) and the
+    departure times c goes in I (2.0): the control still feeds at 100 IPM."""
+    result = post(["FROM/0,0,0", "FEDRAT/100", "GOTO/0.0001,0,0"])
+    motion = next(b for b in result.blocks if b.punch and "X" in b.punch)
+    assert motion.punch == "N003G01X+00001I2F500"
+    assert motion.cells[19] == 100
 
 
 def test_missing_feedrate_uses_option_23_with_the_manual_comment() -> None:
@@ -148,7 +162,7 @@ def test_one_shot_rapid_with_vector_optimisation() -> None:
     assert lines == [
         "N003G01X+5Y+25Z-095F400",
         "N003X+5Y+25Z-095",
-        "N005Z-01F500",
+        "N005Z-01K02F500",  # 10 * 10 / 0.1 = 1000: multiplier c = 2, K = 0.2
         "N007X+2Z+01",  # 10 / (2 / 200) = 1000 -> 500, the same F as before: not repeated
         "N008X+1F100",
     ]

@@ -86,7 +86,7 @@ def test_mach04_gear_shift_codes_ride_in_the_motion_blocks() -> None:
         "N006G01X+2Z+4F250M40",
         "N007G01Z+1F100M41",
         "N009G11Z+001F750",
-        "N010G11Z+001",
+        "N010G11Z+001K002F500",  # 1 * 10 / 0.01 = 1000 > 750: multiplier c = 2, K = 0.02
     ]
 
 
@@ -104,7 +104,7 @@ def test_gear_shift_with_dwells_follows_the_manual_sample() -> None:
         "N007G04Z+01M41",
         "N007G01Z+1F100",
         "N009G11Z+001F750",
-        "N010G11Z+001",
+        "N010G11Z+001K002F500",  # 1 * 10 / 0.01 = 1000 > 750: multiplier c = 2, K = 0.02
     ]
 
 

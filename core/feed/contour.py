@@ -12,6 +12,8 @@ L10799-10815), for the absolute printout; commands are rounded half-up to the F 
 
 from __future__ import annotations
 
+from math import ceil
+
 from gecent.core.errors import NotYetSupported
 from gecent.core.feed.magic3 import decode, magic3
 from gecent.core.machine.definition import MachineDefinition
@@ -71,6 +73,31 @@ class FeedCommand:
         used = min(max(command, lowest), highest)
         rounded = float(half_up(used, int(regfor) % 10))
         return rounded, (ipm if used == command else used * length), regfor
+
+    def multiplier(
+        self, ipm: float, gdimul: float, length: float, dimension_class: int
+    ) -> tuple[int, float, float | None] | None:
+        """The feedrate multiplier constant (option 26 = 0, manual §4.1.5.2, 001
+        L12440-12529): when a linear block's command exceeds its maximum, the smallest whole
+        c with Fc / c below the maximum, as (c, command, F format); None when the command
+        is within its maximum or the form has no multiplier (magic three). The block's
+        departures times c go in I, J, K."""
+        if self.form == 1:
+            return None
+        if self.form == 0:
+            command, highest, regfor, decimals = (
+                gdimul * ipm / length,
+                self.maximum,
+                None,
+                self.decimals,
+            )
+        else:
+            regfor, _, highest = self._row(dimension_class)
+            command, decimals = ipm / length, int(regfor) % 10
+        if command <= highest:
+            return None
+        constant = ceil(command / highest - 1e-9)  # to the maximum "or below" (L12470-12480)
+        return constant, float(half_up(command / constant, decimals)), regfor
 
     def _row(self, location: int) -> tuple[float, float, float]:
         start = _CLASS_ORDER.index(location)

@@ -116,7 +116,7 @@ class RapidTraverse:
             self.emit(self.dwell(dwell))
 
 
-def _codes(tablem: tuple[object, ...], cells: tuple[int, ...], axes: tuple[int, ...]) -> tuple[
-    float, ...
-]:
+def _codes(
+    tablem: tuple[object, ...], cells: tuple[int, ...], axes: tuple[int, ...]
+) -> tuple[float, ...]:
     return tuple(float(tablem[cells[a]]) for a in axes if tablem[cells[a]] is not ABSENT)  # type: ignore[arg-type]

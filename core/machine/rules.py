@@ -166,6 +166,37 @@ def _feed_format(machine: MachineDefinition) -> Iterator[Problem]:
         yield "optab", 26, "option 26 = 0 (feedrate multiplier) needs I, J or K registers"
 
 
+def _departure_capacity(machine: MachineDefinition) -> Iterator[Problem]:
+    """The X, Y and Z formats must hold the largest departure, option 4 (DEPMAX), since
+    moves are segmented to it (001 L4318-4333); under option 41 <= 0 the long departures
+    of G10 blocks use format 23 or 24 and the others stay under 10 (§4.8, 001 L16144-16269)."""
+    if _number(machine, 1) != 0:
+        return
+    depmax = _number(machine, 4)
+    variable = _number(machine, 41)
+    for location in (3, 4, 5):
+        fmt = machine.registers.formats[location]
+        if fmt is None:
+            continue
+        capacity = 10**fmt.left - 10**-fmt.right
+        if variable <= 0:
+            long_capacity = 100 - 10 ** -(4 if variable == -2 else 3)
+            if depmax > long_capacity + 1e-9 or capacity + 1e-9 < 9.9999:
+                yield (
+                    "regfor",
+                    location,
+                    f"option 41 = {variable:g} needs this format to hold 9.9999 and option 4 "
+                    f"({depmax:g}) to be at most {long_capacity:g}",
+                )
+        elif depmax > capacity + 10**-fmt.right:  # MACH51: 999.9999 in format 33 passes
+            yield (
+                "regfor",
+                location,
+                f"format {fmt.regfor:g} holds at most {capacity:g}, less than the largest "
+                f"departure option 4 = {depmax:g}",
+            )
+
+
 def _output_order(machine: MachineDefinition) -> Iterator[Problem]:
     order = machine.output_order
     if order is None:
@@ -199,5 +230,10 @@ def check_definition(machine: MachineDefinition) -> tuple[list[Problem], list[st
         f"option {number}: {text}"
         for number, text in _NEVER_ZERO.items()
         if machine.options[number] == 0.0
+    ]
+    # a format too small for option 4 only matters to a move that long (the manual's own
+    # option-change example sets option 4 = 20 on MACH40's format 14), so it is a warning
+    warnings += [
+        f"[{table}] entry {entry}: {text}" for table, entry, text in _departure_capacity(machine)
     ]
     return errors, warnings

@@ -53,6 +53,18 @@ class LinearCodes:
             raise FatalError(138, f"no TABLEG code covers a departure of {largest_steps} steps")
         return code
 
+    def smaller(self, code: DimensionCode) -> list[tuple[DimensionCode, float]]:
+        """The available codes below ``code``, largest first, each with its upper limit in
+        steps (a departure must stay under it): TSTFCM's candidates."""
+        index = next(
+            i for i, c in enumerate(self.codes) if c is not None and c.location == code.location
+        )
+        return [
+            (candidate, self.limits[i])
+            for i in range(index - 1, -1, -1)
+            if (candidate := self.codes[i]) is not None
+        ]
+
 
 # (CLW location, CCLW location, GDIMUL) per radius band (SELGCR, 001 L6076-6170)
 CIRCULAR_RANGES = (

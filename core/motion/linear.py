@@ -38,6 +38,10 @@ class LinearMotion:
         # CL x, y (two-axis machines such as the lathe MACH04) or x, y, z (001 L1318-1320)
         self.axes = 2 if machine.number_option(22) in TWO_AXIS else 3
         self.depmax = round(machine.number_option(4) / self.step)
+        # option 41 = 0, the 100M's variable format (§4.8, 001 L16144-16269): a feed move
+        # over 9.9999 in is segmented to 9.9999; a longer rapid goes in G10 with STEP x 10
+        self.variable_format = machine.number_option(41) == 0
+        self.short_max = round(9.9999 / self.step)
 
     def record(self, record: Motion) -> None:
         if record.subtype is MotionSubtype.FROM:
@@ -87,11 +91,37 @@ class LinearMotion:
         departures = [position.present[a] - position.previous[a] for a in range(self.axes)]
         if not any(departures):
             return  # RETURN = -1: no move, the previous point stays (001 L4283-4290)
-        count = segment_count(departures, [self.depmax] * self.axes)
+        depmax, coarse = self.depmax, False
+        if self.variable_format and max(abs(d) for d in departures) > self.short_max:
+            if self.state.feed.rapid_ipm:
+                coarse = True
+            else:
+                depmax = self.short_max
+        count = segment_count(departures, [depmax] * self.axes)
         reached = list(position.previous[:3])
+        carry = [0] * self.axes
         for part in segments(departures, count) if count > 1 else (tuple(departures),):
+            if coarse:
+                part = _truncated_to_thousandths(part, carry)
             for axis, steps in enumerate(part):
                 reached[axis] += steps
             self.emit(Block.motion(Code.LINEAR, record.number, part, tuple(reached), self.step))
+        if coarse:
+            # the truncated remnant is taken off the present point, so the next departure
+            # recovers it (truncate and carry, 001 L16200-16245)
+            position.present[: self.axes] = reached[: self.axes]
         position.previous_part[:] = position.present_part
         position.previous[:] = position.present
+
+
+def _truncated_to_thousandths(part: tuple[int, ...], carry: list[int]) -> tuple[int, ...]:
+    """A G10 departure under option 41 = 0: truncated (not rounded) to whole tens of steps,
+    STEP x 10 (0.001 in on the 0.0001-in 100M); the remnant is carried into the next
+    segment."""
+    out = []
+    for axis, steps in enumerate(part):
+        wanted = steps + carry[axis]
+        kept = int(wanted / 10) * 10  # toward zero
+        carry[axis] = wanted - kept
+        out.append(kept)
+    return tuple(out)

@@ -12,13 +12,14 @@ from __future__ import annotations
 from math import asin
 
 from gecent.core.absent import ABSENT, Absent
-from gecent.core.errors import Diagnostic, FatalError
+from gecent.core.errors import Diagnostic, FatalError, SourcePosition
 from gecent.core.feed.contour import FeedCommand, RapidCommand
 from gecent.core.machine.regformat import decode_regfor
 from gecent.core.machine.shuffle import cell_map
 from gecent.core.motion.gcode import CircularCodes, LinearCodes
+from gecent.core.motion.segments import segments
 from gecent.core.output.block import Block, Code
-from gecent.core.output.format import RegisterFormatter
+from gecent.core.output.format import FormatOverflow, RegisterFormatter
 from gecent.core.output.marks import stand_in
 from gecent.core.state import PostState
 
@@ -73,6 +74,18 @@ class OutputElement:
         except ValueError as exc:
             raise FatalError(7, str(exc)) from None
         self.zero_rule = machine.number_option(51)
+        # option 170 = 1: G-code segmentation of command-limited feed moves (option 10 = 0)
+        self.segment_by_code = (
+            machine.number_option(170) == 1 and machine.number_option(10) == 0 and contouring
+        )
+        # option 26 = 0: the feedrate multiplier constant, on a contouring machine
+        self.multiplier = machine.number_option(26) == 0 and contouring
+        self.offset_capacity = {
+            location: 10**fmt.left - 10**-fmt.right
+            for location in (8, 9, 10)
+            if (fmt := registers.formats[location]) is not None
+        }
+        self.long_formatters = self._long_departure_formatters()
         self.suppress_g = machine.number_option(38) == 0
         dwell_g = machine.tableg[5]
         self.fill_g: float | Absent = (
@@ -98,6 +111,16 @@ class OutputElement:
         if block.code is Code.TMARK:
             self._tmark(block)
             return
+        if self.segment_by_code and block.code is Code.LINEAR and not state.feed.rapid_ipm:
+            parts = self._segmented_by_code(block)
+            if parts is not None:
+                for part in parts:
+                    self._output(part)
+                return
+        self._output(block)
+
+    def _output(self, block: Block) -> None:
+        state = self.state
         block.cells[15] = float(int(block.code))
         sequence = block.record if block.record is not None else state.sequence
         if sequence > self.sequence_limit:
@@ -165,7 +188,17 @@ class OutputElement:
             self._assumed_feed = True
             self.diagnostics.append(Diagnostic("OPTION FEEDRATE ASSUMED."))
             feed.ipm = self.state.machine.number_option(23)
-        command, ipm, f_format = self.feed.command(feed.ipm, code.gdimul, length, code.size_class)
+        multiplied = (
+            self._multiplied(block, feed.ipm, code.gdimul, length, code.size_class)
+            if self.multiplier and block.code is Code.LINEAR
+            else None
+        )
+        if multiplied is not None:
+            command, ipm, f_format = multiplied
+        else:
+            command, ipm, f_format = self.feed.command(
+                feed.ipm, code.gdimul, length, code.size_class
+            )
         block.cells[11] = command
         block.cells[19] = ipm
         block.f_format = f_format
@@ -175,6 +208,56 @@ class OutputElement:
             self.cut_minutes += arc / ipm
         else:
             self.cut_minutes += length / ipm
+
+    def _segmented_by_code(self, block: Block) -> list[Block] | None:
+        """TSTFCM (option 170 = 1, manual §4.1.5.1, 001 L11920-11987): a linear block whose
+        feed command would exceed option 24 is cut into the fewest equal segments that a
+        smaller dimension code can carry with a command within it, trying each smaller code
+        in turn; None keeps the block whole (and the command is limited as usual)."""
+        assert block.steps is not None and block.position is not None
+        largest = max(abs(s) for s in block.steps)
+        code = self.linear_codes.select(largest)
+        length = sum((s * self.step) ** 2 for s in block.steps) ** 0.5
+        ipm = self.state.feed.ipm
+        if code.gdimul * ipm / length <= self.feed.maximum:
+            return None
+        for candidate, limit in self.linear_codes.smaller(code):
+            count = int(largest / limit) + 1  # every departure / count under the limit
+            if candidate.gdimul * ipm * count / length > self.feed.maximum:
+                continue
+            start = [p - s for p, s in zip(block.position, block.steps, strict=True)]
+            parts = []
+            for steps in segments(block.steps, count):
+                start = [a + s for a, s in zip(start, steps, strict=True)]
+                parts.append(
+                    Block.motion(Code.LINEAR, block.record or 0, steps, tuple(start), self.step)
+                )
+            return parts
+        return None
+
+    def _multiplied(
+        self, block: Block, ipm: float, gdimul: float, length: float, size_class: int
+    ) -> tuple[float, float, float | None] | None:
+        """Option 26 = 0: the command divided by c and the departures times c in I, J, K,
+        if every product fits its register; otherwise None (the command is clamped)."""
+        found = self.feed.multiplier(ipm, gdimul, length, size_class)
+        if found is None:
+            return None
+        constant, command, f_format = found
+        assert block.steps is not None
+        products = {}
+        for axis, steps in enumerate(block.steps):
+            if steps == 0:
+                continue
+            target = self.shuffle[3 + axis]
+            capacity = self.offset_capacity.get(target[0]) if target is not None else None
+            value = abs(steps) * self.step * constant
+            if capacity is None or value > capacity:
+                return None
+            products[8 + axis] = value
+        for cell, value in products.items():
+            block.cells[cell] = value
+        return command, ipm, f_format
 
     # -- GEOUT: words and the tape line (flow chart 12) ----------------------------------
 
@@ -191,6 +274,25 @@ class OutputElement:
             skip = block.cells[1] is not ABSENT and float(block.cells[1]) < 0
             block.punch = "/" + punch if skip else punch
         self.emitted.append(block)
+
+    def _long_departure_formatters(self) -> dict[int, RegisterFormatter]:
+        """Option 41 <= 0 (§4.8, 001 L16144-16269): in a G10 block (TABLEG(11)) X, Y and Z
+        take format 23 (24 under -2), with the sign rule of their own format."""
+        machine = self.state.machine
+        variable = machine.number_option(41)
+        if variable > 0 or machine.tableg[11] is ABSENT:
+            return {}
+        size = 24.0 if variable == -2 else 23.0
+        formatters = {}
+        for location in (3, 4, 5):
+            regfor = machine.registers.regfor[location]
+            if regfor:
+                fmt = decode_regfor(-size if regfor < 0 else size)
+                assert fmt is not None
+                formatters[location] = RegisterFormatter(
+                    location, machine.registers.letters[location], fmt, drop_trailing=True
+                )
+        return formatters
 
     def _f_formatter(self, regfor: float) -> RegisterFormatter:
         """FVARGO: inverse time changes the F format with the block's G code."""
@@ -219,8 +321,16 @@ class OutputElement:
     def _words(self, block: Block, *, suppress: bool) -> list[tuple[int, str, str, str]]:
         """(location, letter, printed, punched) of each register the block outputs."""
         words: list[tuple[int, str, str, str]] = []
+        long_departure = (
+            self.long_formatters
+            and block.code is Code.LINEAR
+            and block.cells[2] is not ABSENT
+            and float(block.cells[2]) == float(self.state.machine.tableg[11])  # type: ignore[arg-type]
+        )
         for formatter in self.formatters:
             location = formatter.location
+            if long_departure and location in self.long_formatters:
+                formatter = self.long_formatters[location]
             value = block.cells[location]
             if value is ABSENT:
                 continue
@@ -237,7 +347,12 @@ class OutputElement:
                 self.previous_f = number
             if location == 11 and block.f_format is not None:
                 formatter = self._f_formatter(block.f_format)
-            text = formatter.format(number)
+            try:
+                text = formatter.format(number)
+            except FormatOverflow as overflow:
+                record = block.record if block.record is not None else self.state.sequence
+                overflow.where = SourcePosition("", None, None, record)
+                raise
             if location in ZERO_RULE_CELLS and text.punched.strip("+-0") == "":
                 if self.zero_rule == 0:  # delete value and address (standard)
                     continue

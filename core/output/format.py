@@ -17,7 +17,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from gecent.core.errors import GecentError
+from gecent.core.errors import EXIT_FATAL, GecentError, SourcePosition
 from gecent.core.machine.regformat import RegisterFormat
 from gecent.core.motion.rounding import half_up
 
@@ -25,11 +25,20 @@ NO_DECIMAL_POINT = frozenset({1, 2, 12, 13, 14, 17})  # NDP locations (001 L2405
 
 
 class FormatOverflow(GecentError):
-    """A value too large for its register format: an internal fault, since motion is
-    segmented to DEPMAX and N wraps at SEQLIM before formatting."""
+    """A value too large for its register format. Motion is segmented to option 4 and N
+    wraps at SEQLIM, so only a machine whose formats are smaller than its option 4 (a load
+    warning) gets here; the run stops, naming the record."""
+
+    exit_status = EXIT_FATAL
 
     def __init__(self, letter: str, value: float, fmt: RegisterFormat) -> None:
-        super().__init__(f"{letter}{value} does not fit register format {fmt}")
+        self.text = f"{letter}{value:g} does not fit register format {fmt.regfor:g}"
+        self.where: SourcePosition | None = None
+        super().__init__(self.text)
+
+    def __str__(self) -> str:
+        prefix = f"{self.where}: " if self.where is not None else ""
+        return f"{prefix}error: {self.text}"
 
 
 @dataclass(frozen=True, slots=True)
