@@ -77,3 +77,40 @@ def test_a_format_too_small_for_option_4_is_a_load_warning_and_stops_the_long_mo
     assert any("holds at most 9.9999" in warning for warning in fixed.warnings)
     with pytest.raises(FormatOverflow, match=r"X40 does not fit register format -14"):
         post(LONG_MOVES, fixed)
+
+
+LEADING_ZEROS = """
+[machine]
+name = "mark-century-100m-lzs"
+title = "100M LEADING ZERO SUPPRESSION"
+[tableg]
+12 = 11
+13 = 12
+[regfor]
+3 = -14.0
+4 = -14.0
+5 = -14.0
+[optab]
+51 = -2.0
+"""
+
+
+def test_option_51_minus_2_suppresses_leading_zeros_in_g11_and_g12() -> None:
+    """§4.9 (001 L16270-16295): on the 100M, X/Y/Z in G11 blocks lose the zeros left of the
+    point, in G12 one zero right of it too; G01 keeps them. Trailing zeros go as always."""
+    machine = load_machine_text(LEADING_ZEROS, "100m-lzs.toml")
+    program = [
+        "FROM/0,0,0",
+        "FEDRAT/1",
+        "GOTO/0.5,0.25,0",  # G11
+        "GOTO/0.5025,0.3,0",  # G12: 0.0025 and 0.05
+        "GOTO/5.5025,0.3,0",  # G01
+    ]
+    result = post(program, machine)
+    motion = [b for b in result.blocks if b.punch]
+    assert [b.punch for b in motion] == [
+        "N003G11X+5Y+25F002",
+        "N004G12X+025Y+5",  # 0.0025 keeps its second zero; the F (002) is not repeated
+        "N005G01X+5",
+    ]
+    assert dict(motion[1].words)[3] == "+0.0025"  # the listing keeps the digits

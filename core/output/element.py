@@ -86,6 +86,11 @@ class OutputElement:
             if (fmt := registers.formats[location]) is not None
         }
         self.long_formatters = self._long_departure_formatters()
+        self.leading_zero_codes = {
+            float(code): extra
+            for location, extra in ((12, 0), (13, 1))
+            if (code := machine.tableg[location]) is not ABSENT
+        }
         self.suppress_g = machine.number_option(38) == 0
         dwell_g = machine.tableg[5]
         self.fill_g: float | Absent = (
@@ -294,6 +299,14 @@ class OutputElement:
                 )
         return formatters
 
+    def _leading_zero_rule(self, block: Block) -> dict[int, int] | None:
+        """Option 51 = -2 (100M, §4.9): in G11 (TABLEG(12)) blocks X, Y, Z lose their
+        leading zeros left of the point, in G12 (TABLEG(13)) one zero right of it too."""
+        if self.zero_rule != -2 or block.code is not Code.LINEAR or block.cells[2] is ABSENT:
+            return None
+        extra = self.leading_zero_codes.get(float(block.cells[2]))
+        return None if extra is None else {3: extra, 4: extra, 5: extra}
+
     def _f_formatter(self, regfor: float) -> RegisterFormatter:
         """FVARGO: inverse time changes the F format with the block's G code."""
         formatter = self._f_formats.get(regfor)
@@ -327,6 +340,7 @@ class OutputElement:
             and block.cells[2] is not ABSENT
             and float(block.cells[2]) == float(self.state.machine.tableg[11])  # type: ignore[arg-type]
         )
+        leading = self._leading_zero_rule(block)
         for formatter in self.formatters:
             location = formatter.location
             if long_departure and location in self.long_formatters:
@@ -348,13 +362,16 @@ class OutputElement:
             if location == 11 and block.f_format is not None:
                 formatter = self._f_formatter(block.f_format)
             try:
-                text = formatter.format(number)
+                text = formatter.format(
+                    number,
+                    leading.get(location) if leading is not None else None,
+                )
             except FormatOverflow as overflow:
                 record = block.record if block.record is not None else self.state.sequence
                 overflow.where = SourcePosition("", None, None, record)
                 raise
             if location in ZERO_RULE_CELLS and text.punched.strip("+-0") == "":
-                if self.zero_rule == 0:  # delete value and address (standard)
+                if self.zero_rule in (0, -2):  # delete value and address (standard)
                     continue
                 if self.zero_rule == 1:  # the address alone
                     words.append((location, formatter.letter, text.printed, ""))

@@ -61,7 +61,10 @@ class RegisterFormatter:
         self.drop_trailing = drop_trailing and fmt.right > 0
         self.point = fmt.right > 0 and location not in NO_DECIMAL_POINT
 
-    def format(self, value: float) -> Formatted:
+    def format(self, value: float, suppress_leading: int | None = None) -> Formatted:
+        """The printed and punched forms. ``suppress_leading`` (option 51 = -2, the 100M's
+        G11/G12 departures) drops the punched integer digits' leading zeros and that many
+        zeros after the point (001 L16270-16295); the printed form keeps them."""
         fmt = self.fmt
         quantised = half_up(abs(value), fmt.right)
         whole, _, fraction = f"{quantised:.{fmt.right}f}".partition(".")
@@ -73,6 +76,16 @@ class RegisterFormatter:
         sign = ("-" if value < 0 and quantised else "+") if fmt.signed else ""
         printed = sign + whole + ("." if self.point else "") + shown
         punched = (sign + whole + shown).replace(" ", "")
+        if suppress_leading is not None:
+            digits = whole.lstrip("0") or ""
+            kept = shown.replace(" ", "")
+            if not digits:
+                kept = (
+                    kept[suppress_leading:]
+                    if kept[:suppress_leading] == "0" * suppress_leading
+                    else kept
+                )
+            punched = sign + digits + kept
         if punched.strip("+-") == "":
             punched = sign + "0"
         return Formatted(printed, punched)
