@@ -347,7 +347,7 @@ class Run:
         request = parse_machin(statement)
         if request is None:
             return  # another postprocessor's MACHIN: reported when the machine was chosen
-        if request.number is not None and self.machine.number not in (None, request.number):
+        if request.number is not None and self.machine.number != request.number:
             self.warn(
                 Diagnostic(
                     f"MACHIN/GECENT,{request.number} IGNORED: "

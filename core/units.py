@@ -73,7 +73,17 @@ class UnitScale:
             points = tuple(
                 (p[0] * factor, p[1] * factor, p[2] * factor, *p[3:]) for p in record.points
             )
-            return replace(record, points=points)
+            # built directly: dataclasses.replace costs more than the scaling on long files
+            return Motion(
+                record.file,
+                record.line,
+                record.number,
+                record.subtype,
+                points,
+                record.name,
+                record.subscript,
+                offset=record.offset,
+            )
         if isinstance(record, Circle) and len(record.values) >= 7:
             v = record.values
             values = (v[0] * factor, v[1] * factor, v[2] * factor, v[3], v[4], v[5],

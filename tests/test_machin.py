@@ -2,11 +2,14 @@
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import pytest
 from gecent.core.cl.records import Statement, Word
 from gecent.core.errors import FatalError, InputError, NotYetSupported
 from gecent.core.machine.selection import apply_machin_options, parse_machin, resolve_machine
-from gecent.core.plugins import PluginSet
+from gecent.core.plugins import PluginSet, get_plugins
+from gecent.core.run import post
 
 
 def machin(*args: object) -> Statement:
@@ -65,3 +68,15 @@ def test_option_change_that_breaks_the_machine(plugins: PluginSet) -> None:
     assert request is not None
     with pytest.raises(InputError, match="fatal error 7"):
         apply_machin_options(resolve_machine(plugins, None, request), request)
+
+
+def test_machin_after_the_first_motion_cannot_choose_the_machine(tmp_path: Path) -> None:
+    """The first pass stops at the first motion record: motion is made for the machine
+    known by then; a later MACHIN/GECENT naming another machine is reported and ignored."""
+    source = tmp_path / "late.apt"
+    source.write_text("FROM/0,0,0\nFEDRAT/10\nGOTO/1,0,0\nMACHIN/GECENT,23\nFINI\n")
+    result = post(str(source), get_plugins())
+    assert result.machine.name == "standard"
+    assert [d.text for d in result.diagnostics] == [
+        f"MACHIN/GECENT,23 IGNORED: THE RUN USES MACHINE {result.machine.label}"
+    ]

@@ -4,7 +4,10 @@ from __future__ import annotations
 
 import pytest
 from gecent.core.machine.regformat import decode_regfor
-from gecent.core.output.format import FormatOverflow, RegisterFormatter
+from gecent.core.motion.rounding import half_up
+from gecent.core.output.format import FormatOverflow, RegisterFormatter, _units
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 
 def formatter(location: int, letter: str, regfor: float, drop: bool = True) -> RegisterFormatter:
@@ -63,3 +66,17 @@ def test_positioning_keeps_trailing_zeros() -> None:
 def test_overflow_is_refused() -> None:
     with pytest.raises(FormatOverflow, match=r"does not fit register format -14"):
         formatter(3, "X", -14).format(10.0)
+
+
+@settings(max_examples=500, deadline=None)
+@given(
+    st.one_of(
+        st.integers(min_value=0, max_value=10**7).map(lambda n: n * 0.0001),
+        st.floats(min_value=0, max_value=9999, allow_nan=False),
+        st.integers(min_value=0, max_value=10**6).map(lambda n: n / 1000 + 0.0005),
+    ),
+    st.integers(min_value=0, max_value=5),
+)
+def test_fast_rounding_agrees_with_exact_half_up(value: float, decimals: int) -> None:
+    """Values on the step grid take a float path; it must give what Decimal half-up gives."""
+    assert _units(value, decimals) == int(half_up(value, decimals).scaleb(decimals))

@@ -8,7 +8,7 @@ from __future__ import annotations
 from collections.abc import Iterable
 from dataclasses import dataclass, field
 
-from gecent.core.cl.records import Record, Statement, Word
+from gecent.core.cl.records import Motion, Record, Statement, Word
 from gecent.core.errors import (
     Diagnostic,
     FatalError,
@@ -77,9 +77,12 @@ def parse_machin(statement: Statement) -> MachinRequest | None:
 
 
 def first_machin(records: Iterable[Record]) -> tuple[MachinRequest | None, list[Diagnostic]]:
-    """Read until the first MACHIN/GECENT statement, as GEINIT does (001 L2433-2437)."""
+    """Read until the first MACHIN/GECENT statement, as GEINIT does (001 L2433-2437), or
+    the first motion record: motion is made for the machine known by then."""
     notes: list[Diagnostic] = []
     for record in records:
+        if isinstance(record, Motion):
+            break
         if isinstance(record, Statement) and record.major == "MACHIN":
             request = parse_machin(record)
             if request is not None:

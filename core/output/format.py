@@ -16,6 +16,7 @@ Each register's formatter is built once per machine, so the hot loop only quanti
 from __future__ import annotations
 
 from dataclasses import dataclass
+from decimal import Decimal
 
 from gecent.core.errors import EXIT_FATAL, GecentError, SourcePosition
 from gecent.core.machine.regformat import RegisterFormat
@@ -66,26 +67,34 @@ class RegisterFormatter:
         G11/G12 departures) drops the punched integer digits' leading zeros and that many
         zeros after the point (001 L16270-16295); the printed form keeps them."""
         fmt = self.fmt
-        quantised = half_up(abs(value), fmt.right)
-        whole, _, fraction = f"{quantised:.{fmt.right}f}".partition(".")
+        units = _units(abs(value), fmt.right)
+        digits = str(units).rjust(fmt.right + 1, "0")
+        whole, fraction = digits[: len(digits) - fmt.right], digits[len(digits) - fmt.right :]
         whole = whole.lstrip("0")
         if len(whole) > fmt.left:
             raise FormatOverflow(self.letter, value, fmt)
         whole = whole.rjust(fmt.left, "0")
         shown = fraction.rstrip("0").ljust(fmt.right) if self.drop_trailing else fraction
-        sign = ("-" if value < 0 and quantised else "+") if fmt.signed else ""
+        sign = ("-" if value < 0 and units else "+") if fmt.signed else ""
         printed = sign + whole + ("." if self.point else "") + shown
         punched = (sign + whole + shown).replace(" ", "")
         if suppress_leading is not None:
-            digits = whole.lstrip("0") or ""
-            kept = shown.replace(" ", "")
-            if not digits:
-                kept = (
-                    kept[suppress_leading:]
-                    if kept[:suppress_leading] == "0" * suppress_leading
-                    else kept
-                )
-            punched = sign + digits + kept
+            leading, kept = whole.lstrip("0"), shown.replace(" ", "")
+            if not leading and kept.startswith("0" * suppress_leading):
+                kept = kept[suppress_leading:]
+            punched = sign + leading + kept
         if punched.strip("+-") == "":
             punched = sign + "0"
         return Formatted(printed, punched)
+
+
+def _units(magnitude: float, decimals: int) -> int:
+    """``magnitude`` in units of the last decimal, rounded half-up exactly. Values on the
+    grid already (departures are whole steps) take the float path; others, and anything
+    near a half, go through Decimal."""
+    scaled = magnitude * float(10**decimals)
+    nearest = round(scaled)
+    if abs(scaled - nearest) < 1e-6:
+        return nearest
+    exact: Decimal = half_up(magnitude, decimals).scaleb(decimals)
+    return int(exact)
