@@ -236,10 +236,11 @@ def post(
         else None
     )
     stem = Path(input_path)
-    write_atomically(tape_path or stem.with_suffix(".tape"), tape.encode("ascii", "replace"))
+    if not result.punch_suppressed:  # option 110 = +2 after a slide limit: listing only
+        write_atomically(tape_path or stem.with_suffix(".tape"), tape.encode("ascii", "replace"))
     write_atomically(listing_path or stem.with_suffix(".lis"), listing.encode("utf-8"))
-    if punch_to and frames is not None:
-        write_atomically(punch_to[1], frames)
+    if frames is not None and not result.punch_suppressed:
+        write_atomically(punch_to[1], frames)  # type: ignore[index]
     for diagnostic in result.diagnostics:
         click.echo(str(diagnostic), err=True)
 

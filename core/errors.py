@@ -140,6 +140,22 @@ class NotYetSupported(GecentError):
         return f"{prefix}error: not yet supported: {self.feature}"
 
 
+class RunStopped(GecentError):
+    """A condition the machine's options make fatal without a manual error number (for
+    example a slide limit under option 110 = -1): processing stops, exit status 1."""
+
+    exit_status = EXIT_FATAL
+
+    def __init__(self, message: str, where: SourcePosition | None = None) -> None:
+        super().__init__(message)
+        self.message = message
+        self.where = where
+
+    def __str__(self) -> str:
+        prefix = f"{self.where}: " if self.where is not None else ""
+        return f"{prefix}error: {self.message}"
+
+
 class FatalError(GecentError):
     """One of the manual's fatal errors (§5.7.1): processing stops."""
 

@@ -55,6 +55,8 @@ class RunResult:
     partno: str = ""
     records: int = 0
     cut_minutes: float = 0.0
+    # option 110 = +2 and a slide limit exceeded: "warn and continue with no punched output"
+    punch_suppressed: bool = False
 
 
 class Run:
@@ -195,6 +197,10 @@ class Run:
             self.warn(Diagnostic("NO FINI STATEMENT AT THE END OF THE CL FILE"))
         self.result.blocks = self.output.emitted
         self.result.cut_minutes = self.output.cut_minutes
+        if self.output.limits_exceeded and self.machine.number_option(110) == 2:
+            self.result.punch_suppressed = True
+            self.warn(Diagnostic("SLIDE LIMITS EXCEEDED: NO PUNCHED OUTPUT (OPTION 110 = 2)"))
+            self.result.blocks = self.output.emitted
         return self.result
 
     def _collect_notes(self, record: Record) -> None:

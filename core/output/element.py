@@ -12,7 +12,7 @@ from __future__ import annotations
 from math import asin
 
 from gecent.core.absent import ABSENT, Absent
-from gecent.core.errors import Diagnostic, FatalError, SourcePosition
+from gecent.core.errors import Diagnostic, FatalError, RunStopped, SourcePosition
 from gecent.core.feed.contour import FeedCommand, RapidCommand
 from gecent.core.machine.regformat import decode_regfor
 from gecent.core.machine.shuffle import cell_map
@@ -74,6 +74,15 @@ class OutputElement:
         except ValueError as exc:
             raise FatalError(7, str(exc)) from None
         self.zero_rule = machine.number_option(51)
+        self.limit_action = machine.number_option(110)
+        self.limits_exceeded = False
+        self.slide_limits: tuple[tuple[float, float, int], ...] = ()
+        if self.limit_action != 0:
+            signs = [1 if target is None else target[1] for target in self.shuffle[:3]]
+            self.slide_limits = tuple(
+                (machine.number_option(lower), machine.number_option(upper), signs[axis])
+                for axis, (upper, lower) in enumerate(((121, 122), (123, 124), (125, 126)))
+            )
         # option 170 = 1: G-code segmentation of command-limited feed moves (option 10 = 0)
         self.segment_by_code = (
             machine.number_option(170) == 1 and machine.number_option(10) == 0 and contouring
@@ -178,6 +187,8 @@ class OutputElement:
             code = self.linear_codes.select(max(abs(s) for s in block.steps))
             length = sum((s * self.step) ** 2 for s in block.steps) ** 0.5
         block.cells[2] = float(code.code)
+        if self.slide_limits:
+            self._test_slide_limits(block)
         feed = self.state.feed
         if feed.rapid_ipm:
             departures = tuple(s * self.step for s in block.steps)
@@ -213,6 +224,23 @@ class OutputElement:
             self.cut_minutes += arc / ipm
         else:
             self.cut_minutes += length / ipm
+
+    def _test_slide_limits(self, block: Block) -> None:
+        """TSTLIM (001 L38955-39010, options 110 and 121-126): the point reached, on the
+        CL axes with option 59's signs, against each axis's limits; a 0/0 pair is not
+        tested. "AXIS SLIDE LIMIT HAS BEEN EXCEEDED *** WARNING", naming the axis."""
+        assert block.position is not None
+        for axis, (low, high, sign) in enumerate(self.slide_limits):
+            if axis >= len(block.position) or (low == 0 and high == 0):
+                continue
+            value = sign * block.position[axis] * self.step
+            if low - 1e-9 <= value <= high + 1e-9:
+                continue
+            text = f"{'XYZ'[axis]} AXIS SLIDE LIMIT HAS BEEN EXCEEDED *** WARNING"
+            if self.limit_action == -1:
+                raise RunStopped(f"{text} ({value:g} outside {low:g}..{high:g}; option 110 = -1)")
+            self.diagnostics.append(Diagnostic(text))
+            self.limits_exceeded = True
 
     def _segmented_by_code(self, block: Block) -> list[Block] | None:
         """TSTFCM (option 170 = 1, manual §4.1.5.1, 001 L11920-11987): a linear block whose
