@@ -36,6 +36,7 @@ from gecent.core.machine.selection import (
 )
 from gecent.core.motion.circle import CircularMotion
 from gecent.core.motion.linear import LinearMotion, godlta_delta
+from gecent.core.motion.rotary import RotaryElement
 from gecent.core.output.block import Block, Code
 from gecent.core.output.element import OutputElement
 from gecent.core.output.format import FormatOverflow
@@ -75,6 +76,7 @@ class Run:
         self._rapid_traverse: RapidTraverse | None = None
         self._spindle: SpindleElement | None = None
         self._tool_element: ToolElement | None = None
+        self._rotary: RotaryElement | None = None
         self._statements: dict[str, Callable[[Statement], None]] = {
             "PARTNO": self._partno,
             "PPRINT": self._pprint,
@@ -86,6 +88,7 @@ class Run:
             "LEADER": self._leader,
             "SPINDL": self._spindl,
             "TOOLNO": self._tool,
+            "ROTATE": self._rotate,
             "LOADTL": self._tool,
             "TMARK": self._tmark,
         }
@@ -330,6 +333,15 @@ class Run:
         if self.state.feed.per_revolution:
             self._feed_per_revolution(statement)
 
+    def _rotate(self, statement: Statement) -> None:
+        """ROTATE/TABLE|HEAD: an incremental rotary system on a contouring machine (ROTABI);
+        absolute systems belong to positioning machines (ROTABA)."""
+        if self.machine.number_option(1) != 0:
+            raise NotYetSupported("ROTATE on a positioning machine (ROTABA)", statement.where)
+        if self._rotary is None:
+            self._rotary = RotaryElement(self.state, self.output.output, self.warn)
+        self._rotary.statement(statement)
+
     def _tool(self, statement: Statement) -> None:
         self.tool.statement(statement)
 
@@ -366,7 +378,7 @@ class Run:
             # the elements precompute from the machine: rebuild them, keeping what is output
             self.result.machine = self.state.machine = changed
             previous, self._output, self._motion, self._circle = self._output, None, None, None
-            self._rapid_traverse = self._spindle = self._tool_element = None
+            self._rapid_traverse = self._spindle = self._tool_element = self._rotary = None
             if previous is not None:
                 self.output.emitted.extend(previous.emitted)
                 self.output.cut_minutes = previous.cut_minutes

@@ -158,3 +158,11 @@ def test_multiplier_products_that_do_not_fit_fall_back_to_the_clamp() -> None:
     motion = next(b for b in result.blocks if b.punch)
     assert motion.cells[8] is ABSENT
     assert motion.punch == "N003G01X+09F500"  # 10 x 500 / 9 = 555.6 -> 500
+
+
+def test_inverse_time_on_an_arc_takes_the_row_of_its_radius_band() -> None:
+    """An arc's radius band is a size class like a linear range: radius 2 is the G01 class,
+    row -1/G01 (format 32): F = 10 IPM / 2 in = 5.00 -> F00500."""
+    machine = _machine({10: -1.0}, {11: 33.0})
+    lines = tape(["FROM/2,0,0", "FEDRAT/10", "CIRCLE/0,0,0,0,0,1,2", "GOTO/0,2,0"], machine)
+    assert lines == ["N004G03X-2Y+2I2F00500"]

@@ -66,6 +66,34 @@ class LinearCodes:
         ]
 
 
+class RotaryCodes:
+    """SELGRO (001 L6171-6282): a rotary departure (output units) against option 111's
+    maximum over 1000, 100, 10 and 1, in TABLEG 13, 12, 2, 11 (no rotary TABLEG(14))."""
+
+    def __init__(self, machine: MachineDefinition, maximum_units: float) -> None:
+        self.limits = tuple(maximum_units / d for d in (1000.0, 100.0, 10.0))
+        codes: list[DimensionCode | None] = []
+        for location, gdimul in LINEAR_RANGES[:4]:
+            value = machine.tableg[location]
+            codes.append(
+                None if value is ABSENT else DimensionCode(int(value), location, gdimul, location)
+            )
+        self.codes = tuple(codes)
+
+    def select(self, largest_units: float) -> DimensionCode:
+        code = _covering(self.codes, self.limits, largest_units)
+        if code is None:
+            raise FatalError(138, f"no TABLEG code covers a rotary departure of {largest_units:g}")
+        return code
+
+
+def larger(first: DimensionCode, second: DimensionCode) -> DimensionCode:
+    """The combination rule: a block with linear (or circular) and rotary departures takes
+    the larger of the two ranges, which covers both (001 L6261-6282)."""
+    rank = {location: i for i, (location, _) in enumerate(LINEAR_RANGES)}
+    return first if rank[first.size_class] >= rank[second.size_class] else second
+
+
 # (CLW location, CCLW location, GDIMUL) per radius band (SELGCR, 001 L6076-6170)
 CIRCULAR_RANGES = (
     (23, 33, 0.1),
@@ -88,11 +116,16 @@ class CircularCodes:
         self.codes: dict[bool, tuple[DimensionCode | None, ...]] = {}
         for clockwise in (True, False):
             codes: list[DimensionCode | None] = []
-            for cw, ccw, gdimul in CIRCULAR_RANGES:
+            for (cw, ccw, gdimul), (size_class, _) in zip(
+                CIRCULAR_RANGES, LINEAR_RANGES, strict=True
+            ):
                 location = cw if clockwise else ccw
                 value = machine.tableg[location]
+                # an arc's radius band is the same size class as a linear range (inverse time)
                 codes.append(
-                    None if value is ABSENT else DimensionCode(int(value), location, gdimul)
+                    None
+                    if value is ABSENT
+                    else DimensionCode(int(value), location, gdimul, size_class)
                 )
             self.codes[clockwise] = tuple(codes)
 

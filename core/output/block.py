@@ -75,6 +75,7 @@ class Block:
     steps: tuple[int, ...] | None = None
     radius: float | None = None  # CIRRAD of a circular block
     rapid: bool = False
+    rotary: tuple[int, float] | None = None  # a rotary block's cell and travel in degrees
     f_format: float | None = None  # REGFOR(11) for this block under inverse time
     # set by the output element: the printed value of each register output, and the tape line
     words: tuple[tuple[int, str], ...] = ()

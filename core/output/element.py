@@ -9,14 +9,14 @@ into the control's command (CONTUR, core/feed/contour.py) and formats each regis
 
 from __future__ import annotations
 
-from math import asin
+from math import asin, pi, radians
 
 from gecent.core.absent import ABSENT, Absent
 from gecent.core.errors import Diagnostic, FatalError, RunStopped, SourcePosition
 from gecent.core.feed.contour import FeedCommand, RapidCommand
 from gecent.core.machine.regformat import decode_regfor
 from gecent.core.machine.shuffle import cell_map
-from gecent.core.motion.gcode import CircularCodes, LinearCodes
+from gecent.core.motion.gcode import CircularCodes, LinearCodes, RotaryCodes
 from gecent.core.motion.segments import segments
 from gecent.core.output.block import Block, Code
 from gecent.core.output.format import FormatOverflow, RegisterFormatter
@@ -95,6 +95,8 @@ class OutputElement:
             if (fmt := registers.formats[location]) is not None
         }
         self.long_formatters = self._long_departure_formatters()
+        per_degree = {0.0: 1 / 360, 1.0: 1.0, -1.0: 100 / 360}.get(machine.number_option(118), 1.0)
+        self.rotary_codes = RotaryCodes(machine, machine.number_option(111) * per_degree)
         self.leading_zero_codes = {
             float(code): extra
             for location, extra in ((12, 0), (13, 1))
@@ -142,6 +144,8 @@ class OutputElement:
         block.cells[1] = float(-sequence if state.skipping else sequence)
         if block.code in MOTION_CODES:
             self._motion(block)
+        elif block.code is Code.ROTARY_INCREMENTAL:
+            self._rotary(block)
         elif block.code in G_FILLED and block.cells[2] is ABSENT:
             block.cells[2] = self.fill_g
         block.cells[12] = state.pending.spindle
@@ -225,6 +229,31 @@ class OutputElement:
         else:
             self.cut_minutes += length / ipm
 
+    def _rotary(self, block: Block) -> None:
+        """An incremental rotary block: SELGRO's G code, and the feed over the arc the part
+        radius (option 112) sweeps, held to the table's feed range (options 113, 114 in
+        RPM) (001 L10936-10984, L6171-6282)."""
+        assert block.rotary is not None
+        cell, degrees = block.rotary
+        code = self.rotary_codes.select(abs(float(block.cells[cell])))  # type: ignore[arg-type]
+        block.cells[2] = float(code.code)
+        machine = self.state.machine
+        radius = machine.number_option(112)
+        length = radians(degrees) * radius
+        per_rpm = 2 * pi * radius
+        low, high = machine.number_option(113) * per_rpm, machine.number_option(114) * per_rpm
+        feed = self.state.feed
+        if feed.programmed is None and not self._assumed_feed:
+            self._assumed_feed = True
+            self.diagnostics.append(Diagnostic("OPTION FEEDRATE ASSUMED."))
+            feed.ipm = machine.number_option(23)
+        ipm = min(max(feed.ipm, low), high)
+        command, ipm, f_format = self.feed.command(ipm, code.gdimul, length, code.size_class)
+        block.cells[11] = command
+        block.cells[19] = ipm
+        block.f_format = f_format
+        self.cut_minutes += length / ipm
+
     def _test_slide_limits(self, block: Block) -> None:
         """TSTLIM (001 L38955-39010, options 110 and 121-126): the point reached, on the
         CL axes with option 59's signs, against each axis's limits; a 0/0 pair is not
@@ -300,7 +329,9 @@ class OutputElement:
             return
         if block.code not in UNSHUFFLED:
             self._shuffle(block)
-        words = self._words(block, suppress=block.code in MOTION_CODES)
+        words = self._words(
+            block, suppress=block.code in MOTION_CODES or block.code is Code.ROTARY_INCREMENTAL
+        )
         block.words = tuple((location, printed) for location, _, printed, _ in words)
         if block.punched:
             punch = "".join(letter + punched for _, letter, _, punched in words)

@@ -121,6 +121,7 @@ PRINTABLE = frozenset(
     {
         Code.FROM,
         Code.LINEAR,
+        Code.ROTARY_INCREMENTAL,
         Code.NONMOTION,
         Code.AUX_ONLY,
         Code.DWELL,

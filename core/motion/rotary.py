@@ -1,0 +1,182 @@
+"""Rotary tables and heads: ROTATE/TABLE and ROTATE/HEAD (manual §3.4.5, 001 L5385-5835;
+ROTABL L36012-36053, ROTABI L35939-36010, ROTOUT L36304-36343; options 29, 111, 117-120).
+
+Angles are degrees; the table's position is kept in [0, 360). A move is a signed travel,
+positive clockwise (CLW: a right-hand screw advancing along the negative axis, option
+117's definition). Option 117 says whether CLW increases the scale reading; option 118
+gives the output units (revolutions, degrees or hundredths of a revolution); option 119 the
+step. On an incremental system (ROTABI) each block carries the departure, moves longer than
+option 111 are split equally, and each departure is rounded with the difference carried,
+so the table never drifts more than half a step (§3.4.5.3). An absolute system (ROTABA,
+positioning machines) outputs the target, in two moves when the programmed direction is
+the long way round.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass
+
+from gecent.core.cl.records import Statement, Word
+from gecent.core.errors import Diagnostic, InputError, NotYetSupported
+from gecent.core.motion.rounding import to_steps
+from gecent.core.output.block import Block, Code
+from gecent.core.state import PostState
+
+CLW, CCLW = 1, -1
+HEAD_CELL, TABLE_CELL = 6, 7  # DBFSEG(6) head, DBFSEG(7) table (001 L5600-5606)
+_UNITS_PER_DEGREE = {0.0: 1 / 360, 1.0: 1.0, -1.0: 100 / 360}  # option 118
+
+
+def normalise(angle: float) -> float:
+    """An angle in [0, 360): -40 -> 320, -400 -> 320, 360 -> 0 (001 L5476-5477)."""
+    value = angle % 360.0
+    return 0.0 if value >= 360.0 else value
+
+
+@dataclass(frozen=True, slots=True)
+class RotaryMove:
+    """The new position (degrees, scale reading) and the signed travel (degrees, + = CLW)."""
+
+    position: float
+    travel: float
+
+
+def rotary_move(
+    previous: float,
+    value: float,
+    *,
+    absolute: bool,
+    direction: int | None,
+    clw_increases: bool = True,
+) -> RotaryMove:
+    """INCR alpha (no direction: CLW) or ATANGL beta (no direction: the shorter way)
+    from ``previous`` (001 L5440-5480, L5620-5650)."""
+    scale = 1 if clw_increases else -1
+    if not absolute:
+        travel = value if (direction or CLW) == CLW else -value
+        return RotaryMove(normalise(previous + scale * travel), travel)
+    target = normalise(value)
+    clockwise = normalise(scale * (target - previous))  # the CLW travel, 0 <= t < 360
+    if direction == CLW or clockwise == 0:
+        travel = clockwise
+    elif direction == CCLW:
+        travel = clockwise - 360.0
+    else:
+        travel = clockwise if clockwise <= 180.0 else clockwise - 360.0
+    return RotaryMove(target, travel)
+
+
+def absolute_targets(previous: float, move: RotaryMove, clw_increases: bool = True) -> list[float]:
+    """ROTABA: the positions an absolute table is sent to. Such a table takes the shorter
+    way, so a programmed move of more than 180 degrees goes first to the point 179 degrees
+    along the programmed direction, then to the target (001 L5570-5592)."""
+    if abs(move.travel) <= 180.0:
+        return [move.position]
+    scale = 1 if clw_increases else -1
+    step = 179.0 if move.travel > 0 else -179.0
+    return [normalise(previous + scale * step), move.position]
+
+
+def carried_departures(
+    travel_units: float, maximum_units: float, step: float, carry: float
+) -> tuple[list[int], float]:
+    """ROTOUT: the travel (output units) split into equal parts no longer than the maximum,
+    each rounded to whole steps (SROREC) with the rounding difference carried and added
+    back once it reaches half a step (001 L5520-5546, L5717-5831). Returns the departures
+    in steps and the carry left."""
+    count = int(abs(travel_units) / maximum_units) + 1 if abs(travel_units) > maximum_units else 1
+    part = travel_units / count
+    out: list[int] = []
+    for _ in range(count):
+        rounded = to_steps(part, step)
+        difference = part - rounded * step + carry
+        correction = to_steps(difference, step)
+        out.append(rounded + correction)
+        carry = difference - correction * step
+    return out, carry
+
+
+class RotaryElement:
+    """ROTATE/TABLE|HEAD on an incremental contouring machine (ROTABI without ROTREF)."""
+
+    def __init__(
+        self,
+        state: PostState,
+        emit: Callable[[Block], None],
+        warn: Callable[[Diagnostic], None],
+    ) -> None:
+        machine = state.machine
+        self.state = state
+        self.emit = emit
+        self.warn = warn
+        scaling = machine.number_option(118)
+        if scaling not in _UNITS_PER_DEGREE:
+            raise NotYetSupported(f"rotary scaling option 118 = {scaling:g}")
+        self.per_degree = _UNITS_PER_DEGREE[scaling]
+        self.step = machine.number_option(119)
+        self.maximum = machine.number_option(111) * self.per_degree
+        self.clw_increases = machine.number_option(117) >= 0
+        self.positive_is_clw = machine.number_option(120) != -1
+        self.tracked = machine.number_option(29) != 0
+        self.positions = {HEAD_CELL: 0.0, TABLE_CELL: 0.0}
+        self.carries = {HEAD_CELL: 0.0, TABLE_CELL: 0.0}
+
+    def statement(self, statement: Statement) -> None:
+        cell, absolute, value, direction = _parse(statement)
+        machine = self.state.machine
+        if machine.registers.formats[cell] is None:
+            # head in 6, table in 7 is "merely a convention and not a set rule" (001
+            # L1793-1796): a machine with one rotary register drives either device with it
+            other = TABLE_CELL if cell == HEAD_CELL else HEAD_CELL
+            if machine.registers.formats[other] is None:
+                raise InputError(
+                    f"ROTATE: machine {machine.label} has no rotary register (DBFSEG 6 or 7)",
+                    statement.where,
+                )
+            cell = other
+        if absolute and not self.tracked:
+            self.warn(Diagnostic("ROTREF AND ATANGL CANNOT BE USED", statement.where))
+        move = rotary_move(
+            self.positions[cell],
+            value,
+            absolute=absolute,
+            direction=direction,
+            clw_increases=self.clw_increases,
+        )
+        self.positions[cell] = move.position
+        sign = 1 if self.positive_is_clw else -1
+        departures, self.carries[cell] = carried_departures(
+            sign * move.travel * self.per_degree, self.maximum, self.step, self.carries[cell]
+        )
+        for steps in departures:
+            if steps == 0:
+                continue
+            block = Block(Code.ROTARY_INCREMENTAL, statement.number)
+            block.cells[cell] = steps * self.step
+            block.rotary = (cell, abs(steps * self.step) / self.per_degree)
+            self.emit(block)
+
+
+def _parse(statement: Statement) -> tuple[int, bool, float, int | None]:
+    """ROTATE/TABLE|HEAD, INCR|ATANGL, angle [, CLW|CCLW] (001 L36012-36053)."""
+    words = [a.name for a in statement.args if isinstance(a, Word)]
+    numbers = statement.numbers()
+    device = words[0] if words else ""
+    if device in ("TORCH", "MAGAZINE", "TURRET", "INDEXER"):
+        raise NotYetSupported(f"ROTATE/{device}", statement.where)
+    if device not in ("TABLE", "HEAD"):
+        raise InputError("ROTATE expects TABLE or HEAD first", statement.where)
+    unbuilt = [w for w in words[1:] if w not in ("INCR", "ATANGL", "CLW", "CCLW")]
+    if unbuilt:
+        raise NotYetSupported(f"ROTATE/{device},{unbuilt[0]}", statement.where)
+    modes = [w for w in words if w in ("INCR", "ATANGL")]
+    directions = [w for w in words if w in ("CLW", "CCLW")]
+    if len(modes) != 1 or len(numbers) != 1 or len(directions) > 1:
+        raise InputError(
+            f"ROTATE/{device} expects INCR or ATANGL, one angle and at most one of CLW, CCLW",
+            statement.where,
+        )
+    direction = None if not directions else (CLW if directions[0] == "CLW" else CCLW)
+    cell = TABLE_CELL if device == "TABLE" else HEAD_CELL
+    return cell, modes[0] == "ATANGL", numbers[0], direction
