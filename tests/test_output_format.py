@@ -3,9 +3,13 @@
 from __future__ import annotations
 
 import pytest
+from gecent.core.machine.loader import load_machine_text, standard_machine
 from gecent.core.machine.regformat import decode_regfor
 from gecent.core.motion.rounding import half_up
+from gecent.core.output.block import Block, Code
+from gecent.core.output.element import OutputElement
 from gecent.core.output.format import FormatOverflow, RegisterFormatter, _units
+from gecent.core.state import PostState
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -80,3 +84,40 @@ def test_overflow_is_refused() -> None:
 def test_fast_rounding_agrees_with_exact_half_up(value: float, decimals: int) -> None:
     """Values on the step grid take a float path; it must give what Decimal half-up gives."""
     assert _units(value, decimals) == int(half_up(value, decimals).scaleb(decimals))
+
+
+def _dwell_punch(seconds: float, optab: dict[int, float], regfor: float) -> str:
+
+    text = '[machine]\nname = "dwell"\ntitle = "DWELL"\n[regfor]\n3 = ' + f"{regfor}\n"
+    text += "[optab]\n" + "".join(f"{k} = {v}\n" for k, v in optab.items())
+    element = OutputElement(PostState(load_machine_text(text, "dwell.toml")))
+    block = element.dwell(seconds)
+    block.record = 7
+    element.output(block)
+    assert block.punch is not None
+    return block.punch
+
+
+@pytest.mark.parametrize(
+    ("seconds", "optab", "regfor", "expected"),
+    [
+        (4.0, {56: 10.0, 57: 3.0}, 14.0, "N007G04X04"),  # DW-1 (001 L16305-16330)
+        (42.0, {56: 10.0, 57: 3.0}, 14.0, "N007G04X42"),  # O56a (001 L25116-25121)
+        (15.0, {56: 0.01, 57: 3.0}, 44.0, "N007G04X1500"),  # O56b (001 L25122-25128)
+    ],
+)
+def test_dwell_value_goes_in_the_option_57_register_over_option_56(
+    seconds: float, optab: dict[int, float], regfor: float, expected: str
+) -> None:
+    """A dwell of s seconds is s / option 56 in the option-57 register: 4 s is X04 (not
+    X4), 42 s reads X42 like a 4.2 in move, 15 s with option 56 = 0.01 is X1500."""
+    assert _dwell_punch(seconds, optab, regfor) == expected
+
+
+def test_w14_sequence_numbers_wrap_at_seqlim() -> None:
+    """W14 (001 L9117-9126): REGFOR(1) = 30 holds 999; N 1000 is 1000 mod 999 = 1."""
+
+    element = OutputElement(PostState(standard_machine()))
+    for record in (999, 1000, 2000):
+        element.output(Block(Code.AUX_ONLY, record))
+    assert [b.punch for b in element.emitted] == ["N999", "N001", "N002"]
