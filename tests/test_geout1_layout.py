@@ -48,3 +48,14 @@ def test_titles_are_centred_over_their_fields() -> None:
         centre = column.start + (column.width - 1) // 2
         first = centre - (len(column.heading) - 1) // 2
         assert title[first - 1 : first - 1 + len(column.heading)] == column.heading
+
+
+def test_w10_w11_lathe_title_words() -> None:
+    """W10/W11 (001 L8976-8982, L9488-9530): a lathe with X and Z only titles its columns
+    N G X Z I K F S T M, then ABS-X ABS-Z (OPR- under option 172 = 1) F-IPM S-RPM;
+    a metric machine (option 138 = 1) prints F-MPM."""
+    lathe = get_plugins().machine("mach04").load()
+    words = heading(lathe.with_options({172: 0.0})).split()
+    assert words == "N G X Z I K F S T M ABS-X ABS-Z F-IPM S-RPM".split()
+    assert heading(lathe.with_options({172: 1.0})).split()[10:12] == ["OPR-X", "OPR-Z"]
+    assert "F-MPM" in heading(lathe.with_options({138: 1.0})).split()
