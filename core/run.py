@@ -200,7 +200,7 @@ class Run:
             self.warn(Diagnostic("NO FINI STATEMENT AT THE END OF THE CL FILE"))
         self.result.blocks = self.output.emitted
         self.result.cut_minutes = self.output.cut_minutes
-        if self.output.limits_exceeded and self.machine.number_option(110) == 2:
+        if self.output.slide_limits.exceeded and self.machine.number_option(110) == 2:
             self.result.punch_suppressed = True
             self.warn(Diagnostic("SLIDE LIMITS EXCEEDED: NO PUNCHED OUTPUT (OPTION 110 = 2)"))
             self.result.blocks = self.output.emitted

@@ -56,6 +56,7 @@ def test_w10_w11_lathe_title_words() -> None:
     a metric machine (option 138 = 1) prints F-MPM."""
     lathe = get_plugins().machine("mach04").load()
     words = heading(lathe.with_options({172: 0.0})).split()
-    assert words == "N G X Z I K F S T M ABS-X ABS-Z F-IPM S-RPM".split()
+    registers = ["N", "G", "X", "Z", "I", "K", "F", "S", "T", "M"]
+    assert words == [*registers, "ABS-X", "ABS-Z", "F-IPM", "S-RPM"]
     assert heading(lathe.with_options({172: 1.0})).split()[10:12] == ["OPR-X", "OPR-Z"]
     assert "F-MPM" in heading(lathe.with_options({138: 1.0})).split()

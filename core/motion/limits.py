@@ -1,0 +1,40 @@
+"""Slide limits (TSTLIM, 001 L38955-39010; options 110 and 121-126, L25720-25734,
+L25843-25901): every point reached, on the CL axes with option 59's signs, against each
+axis's limits. A 0/0 pair is an axis without limits."""
+
+from __future__ import annotations
+
+from gecent.core.errors import Diagnostic, RunStopped
+from gecent.core.machine.definition import MachineDefinition
+
+
+class SlideLimits:
+    def __init__(
+        self, machine: MachineDefinition, shuffle: tuple[tuple[int, int] | None, ...]
+    ) -> None:
+        self.step = machine.number_option(14)
+        self.action = machine.number_option(110)
+        self.exceeded = False
+        self.limits: tuple[tuple[float, float, int], ...] = ()
+        if self.action != 0:
+            signs = [1 if target is None else target[1] for target in shuffle[:3]]
+            self.limits = tuple(
+                (machine.number_option(lower), machine.number_option(upper), signs[axis])
+                for axis, (upper, lower) in enumerate(((121, 122), (123, 124), (125, 126)))
+            )
+
+    def test(self, position: tuple[int, ...]) -> list[Diagnostic]:
+        """The warnings for a point in steps; option 110 = -1 stops the run instead."""
+        notes = []
+        for axis, (low, high, sign) in enumerate(self.limits):
+            if axis >= len(position) or (low == 0 and high == 0):
+                continue
+            value = sign * position[axis] * self.step
+            if low - 1e-9 <= value <= high + 1e-9:
+                continue
+            text = f"{'XYZ'[axis]} AXIS SLIDE LIMIT HAS BEEN EXCEEDED *** WARNING"
+            if self.action == -1:
+                raise RunStopped(f"{text} ({value:g} outside {low:g}..{high:g}; option 110 = -1)")
+            notes.append(Diagnostic(text))
+            self.exceeded = True
+        return notes
