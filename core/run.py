@@ -7,7 +7,7 @@ supported" error naming the statement and its line; nothing is written then.
 
 from __future__ import annotations
 
-from collections.abc import Callable, Iterator
+from collections.abc import Iterator
 from dataclasses import dataclass, field
 
 from gecent.core.cl.records import (
@@ -22,16 +22,13 @@ from gecent.core.cl.records import (
     Record,
     Statement,
     Surface,
-    Word,
 )
 from gecent.core.cl.stream import read_cl
 from gecent.core.errors import Diagnostic, InputError, NotYetSupported, SourcePosition
 from gecent.core.feed.rapid import RapidTraverse
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.machine.selection import (
-    apply_machin_options,
     first_machin,
-    parse_machin,
     resolve_machine,
 )
 from gecent.core.motion.circle import CircularMotion
@@ -40,10 +37,10 @@ from gecent.core.motion.rotary import RotaryElement
 from gecent.core.output.block import Block, Code
 from gecent.core.output.element import OutputElement
 from gecent.core.output.format import FormatOverflow
-from gecent.core.output.marks import leader_block, tmark_cells
 from gecent.core.plugins import PluginSet, get_plugins
 from gecent.core.spindle import SpindleElement
 from gecent.core.state import PostState
+from gecent.core.statements import handlers
 from gecent.core.tool import ToolElement
 from gecent.core.units import UnitScale
 
@@ -77,21 +74,8 @@ class Run:
         self._spindle: SpindleElement | None = None
         self._tool_element: ToolElement | None = None
         self._rotary: RotaryElement | None = None
-        self._statements: dict[str, Callable[[Statement], None]] = {
-            "PARTNO": self._partno,
-            "PPRINT": self._pprint,
-            "INSERT": self._insert,
-            "MACHIN": self._machin,
-            "FEDRAT": self._fedrat,
-            "RAPID": self._rapid,
-            "UNITS": self.units.set_units,
-            "LEADER": self._leader,
-            "SPINDL": self._spindl,
-            "TOOLNO": self._tool,
-            "ROTATE": self._rotate,
-            "LOADTL": self._tool,
-            "TMARK": self._tmark,
-        }
+        self._statements = handlers()
+        self._statements["UNITS"] = lambda run, statement: run.units.set_units(statement)
 
     @property
     def machine(self) -> MachineDefinition:
@@ -141,13 +125,13 @@ class Run:
 
     def warn(self, diagnostic: Diagnostic) -> None:
         self.result.diagnostics.append(diagnostic)
-        self._text(
+        self.text_block(
             Block(
                 Code.COMMENT, diagnostic.where.record if diagnostic.where else None, diagnostic.text
             )
         )
 
-    def _text(self, block: Block) -> None:
+    def text_block(self, block: Block) -> None:
         """Text blocks bypass OUTPUT: they take no N and leave the pending S and M alone."""
         self.output.emitted.append(block)
 
@@ -178,13 +162,13 @@ class Run:
                 handler = self._statements.get(record.major)
                 if handler is None:
                     raise NotYetSupported(f"{record.major} statement", record.where)
-                handler(record)
+                handler(self, record)
             elif isinstance(record, Arelem):
                 self._arelem(record)
             elif isinstance(record, Circle):
                 self.circle.surface(record)  # ignored on a linear-only control (option 9 = 0)
             elif isinstance(record, Fini):
-                self._text(Block(Code.FINI, record.number))
+                self.text_block(Block(Code.FINI, record.number))
                 self.finished = True
             elif isinstance(record, Comment | PartText | Surface | Other):
                 continue
@@ -228,12 +212,6 @@ class Run:
             return
         self.motion.record(record)
 
-    def _rapid(self, statement: Statement) -> None:
-        """RAPID: the next motion record goes at rapid traverse (option 109)."""
-        if statement.args:
-            raise NotYetSupported(f"RAPID/{statement.args[0]}", statement.where)
-        self.rapid.request()
-
     def _path_length(self, record: Motion) -> float:
         """PLENTH: the length of the whole record's path from the previous point."""
         position = self.state.position
@@ -262,131 +240,6 @@ class Run:
             corner = record.values[1] if len(record.values) > 1 else 0.0
             tolerances.ball = abs(corner - tolerances.cutter_radius) < 1e-6
 
-    def _fedrat(self, statement: Statement) -> None:
-        """FEDRAT/f[,IPM|IPR] or FEDRAT/IPM,f (001 L31113-31212): the feed in machine
-        units per minute (per revolution: times the spindle speed), clamped to the
-        machine's range (options 48 and 25); the command is made at output. MMPM and MMPR
-        are APT IV's; a bare value is in the CL unit and keeps the last mode."""
-        numbers = statement.numbers()
-        words = [a for a in statement.args if isinstance(a, Word)]
-        unbuilt = [w.name for w in words if w.name not in _FEED_UNITS]
-        if unbuilt or len(words) > 1:
-            raise NotYetSupported(f"FEDRAT/{(unbuilt or [words[1].name])[0]}", statement.where)
-        if len(numbers) != 1:
-            raise InputError(
-                f"FEDRAT expects one feedrate value, found {len(numbers)}", statement.where
-            )
-        unit = words[0] if words else None
-        value = self.units.per_minute(numbers[0], unit)
-        if value <= 0:
-            raise InputError(
-                f"FEDRAT needs a positive feedrate, found {numbers[0]:g}", statement.where
-            )
-        feed = self.state.feed
-        if unit is not None:
-            feed.per_revolution = unit.name in ("IPR", "MMPR")
-        if feed.per_revolution:
-            feed.per_revolution_value = value
-            self._feed_per_revolution(statement)
-        else:
-            self._set_feed(value, statement)
-
-    def _feed_per_revolution(self, statement: Statement) -> None:
-        """FEDIPM = FEDIPR x the spindle speed, again at every speed change."""
-        speed = self.state.spindle.speed
-        if speed is None:
-            self.warn(Diagnostic("NO SPINDLE SPEED GIVEN FOR IPR MODE.", statement.where))
-            speed = self.state.spindle.speed = self.machine.number_option(27)
-        self._set_feed(self.state.feed.per_revolution_value * speed, statement)
-
-    def _set_feed(self, feed: float, statement: Statement) -> None:
-        low, high = self.machine.number_option(48), self.machine.number_option(25)
-        used = min(max(feed, low), high)
-        if statement.major == "FEDRAT" and self.rapid.feedrate(feed, high):
-            pass  # option 109 = +1/+2: the feed above the range is a rapid request
-        elif used != feed:
-            per_minute = "MMPM" if self.units.machine_mm == 1.0 else "IPM"
-            self.warn(
-                Diagnostic(
-                    f"FEEDRATE {feed:g} {per_minute} IS OUTSIDE THE MACHINE RANGE "
-                    f"{low:g}-{high:g}; {used:g} {per_minute} USED",
-                    statement.where,
-                )
-            )
-        self.state.feed.ipm = used
-        self.state.feed.programmed = feed
-
-    def _partno(self, statement: Statement) -> None:
-        text = statement.text or ""
-        if not self.result.partno:
-            self.result.partno = text
-        self._text(Block(Code.PARTNO, statement.number, text))
-
-    def _pprint(self, statement: Statement) -> None:
-        self._text(Block(Code.PPRINT, statement.number, statement.text or ""))
-
-    def _insert(self, statement: Statement) -> None:
-        self._text(Block(Code.INSERT, statement.number, statement.text or ""))
-
-    def _spindl(self, statement: Statement) -> None:
-        self.spindle.statement(statement)
-        if self.state.feed.per_revolution:
-            self._feed_per_revolution(statement)
-
-    def _rotate(self, statement: Statement) -> None:
-        """ROTATE/TABLE|HEAD: an incremental rotary system on a contouring machine (ROTABI);
-        absolute systems belong to positioning machines (ROTABA)."""
-        if self.machine.number_option(1) != 0:
-            raise NotYetSupported("ROTATE on a positioning machine (ROTABA)", statement.where)
-        if self._rotary is None:
-            self._rotary = RotaryElement(self.state, self.output.output, self.warn)
-        self._rotary.statement(statement)
-
-    def _tool(self, statement: Statement) -> None:
-        self.tool.statement(statement)
-
-    def _leader(self, statement: Statement) -> None:
-        """LEADER/L: L inches of leader, in whole cards (CODE -8, 001 L9306-9324)."""
-        numbers = statement.numbers()
-        if len(numbers) != 1 or len(statement.args) != 1:
-            raise InputError("LEADER expects one length in inches", statement.where)
-        # tape is measured in inches whatever the CL units (docs/decisions.md)
-        self._text(leader_block(self.machine, numbers[0], statement.number, statement.where))
-
-    def _tmark(self, statement: Statement) -> None:
-        """TMARK: the end-of-record (rewind stop) code in a block of its own (CODE +8)."""
-        if statement.args:
-            raise NotYetSupported(f"TMARK/{statement.args[0]}", statement.where)
-        block = Block(Code.TMARK, statement.number)
-        tmark_cells(self.machine, block)
-        self.output.output(block)
-
-    def _machin(self, statement: Statement) -> None:
-        request = parse_machin(statement)
-        if request is None:
-            return  # another postprocessor's MACHIN: reported when the machine was chosen
-        if request.number is not None and self.machine.number != request.number:
-            self.warn(
-                Diagnostic(
-                    f"MACHIN/GECENT,{request.number} IGNORED: "
-                    f"THE RUN USES MACHINE {self.machine.label}",
-                    statement.where,
-                )
-            )
-        changed, notes = apply_machin_options(self.machine, request)
-        if changed is not self.machine:
-            # the elements precompute from the machine: rebuild them, keeping what is output
-            self.result.machine = self.state.machine = changed
-            previous, self._output, self._motion, self._circle = self._output, None, None, None
-            self._rapid_traverse = self._spindle = self._tool_element = self._rotary = None
-            if previous is not None:
-                self.output.emitted.extend(previous.emitted)
-                self.output.cut_minutes = previous.cut_minutes
-        for note in notes:
-            self.warn(note)
-
-
-_FEED_UNITS = ("IPM", "MMPM", "IPR", "MMPR")
 
 _TYPE_NAMES = {"MOTION": "5000", "CIRCLE": "3000", "ARELEM": "6000", "MULTIAX": "9000"}
 

@@ -1,0 +1,25 @@
+"""Postprocessor statements (CL type 2000) by major word: the statement -> handler table of
+the manual (spec 08 §2, GEBASE/AUXLRY), one module per group of statements. A handler
+takes the run and the statement record; it changes the run's state and outputs blocks
+through the run's elements."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from typing import TYPE_CHECKING
+
+from gecent.core.cl.records import Statement
+
+if TYPE_CHECKING:
+    from gecent.core.run import Run
+
+Handler = Callable[["Run", Statement], None]
+
+
+def handlers() -> dict[str, Handler]:
+    from gecent.core.statements import feed, machine, spindle_tool, tape, text
+
+    table: dict[str, Handler] = {}
+    for module in (text, machine, feed, tape, spindle_tool):
+        table.update(module.HANDLERS)
+    return table

@@ -1,0 +1,37 @@
+"""LEADER and TMARK: tape marks (manual §3.5.3.2 CODE -8 and +8, 001 L9298-9324)."""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from gecent.core.cl.records import Statement
+from gecent.core.errors import InputError, NotYetSupported
+from gecent.core.output.block import Block, Code
+from gecent.core.output.marks import leader_block, tmark_cells
+
+if TYPE_CHECKING:
+    from gecent.core.run import Run
+
+
+def leader(run: Run, statement: Statement) -> None:
+    """LEADER/L: L inches of leader, in whole cards (CODE -8, 001 L9306-9324)."""
+    numbers = statement.numbers()
+    if len(numbers) != 1 or len(statement.args) != 1:
+        raise InputError("LEADER expects one length in inches", statement.where)
+    # tape is measured in inches whatever the CL units (docs/decisions.md)
+    run.text_block(leader_block(run.machine, numbers[0], statement.number, statement.where))
+
+
+def tmark(run: Run, statement: Statement) -> None:
+    """TMARK: the end-of-record (rewind stop) code in a block of its own (CODE +8)."""
+    if statement.args:
+        raise NotYetSupported(f"TMARK/{statement.args[0]}", statement.where)
+    block = Block(Code.TMARK, statement.number)
+    tmark_cells(run.machine, block)
+    run.output.output(block)
+
+
+HANDLERS = {
+    "LEADER": leader,
+    "TMARK": tmark,
+}
