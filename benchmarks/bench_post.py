@@ -53,7 +53,7 @@ def main() -> None:
         taped = time.perf_counter()
         frames = punch(tape.splitlines(), "eia", stand_in(machine, 64), stand_in(machine, 65))
         punched = time.perf_counter()
-        listing = printout.render(machine, result.blocks, result.partno, result.cut_minutes)
+        listing = printout.render(machine, result.blocks, result.partno)
         listed = time.perf_counter()
     records = result.records
     print(

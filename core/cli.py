@@ -225,9 +225,7 @@ def post(
     printout = plugins.get("printouts", layout)
     if printout is None:
         raise NotYetSupported(f"printout GEOUT{layout} (option 164 = {layout})")
-    listing = printout.render(
-        result.machine, result.blocks, result.partno, cut_minutes=result.cut_minutes
-    )
+    listing = printout.render(result.machine, result.blocks, result.partno)
     tape = tape_image(result.blocks)
     machine = result.machine
     frames = (

@@ -53,6 +53,7 @@ class RunResult:
     partno: str = ""
     records: int = 0
     cut_minutes: float = 0.0
+    dwell_minutes: float = 0.0
     # option 110 = +2 and a slide limit exceeded: "warn and continue with no punched output"
     punch_suppressed: bool = False
 
@@ -184,6 +185,7 @@ class Run:
             self.warn(Diagnostic("NO FINI STATEMENT AT THE END OF THE CL FILE"))
         self.result.blocks = self.output.emitted
         self.result.cut_minutes = self.output.cut_minutes
+        self.result.dwell_minutes = self.output.dwell_minutes
         if self.output.slide_limits.exceeded and self.machine.number_option(110) == 2:
             self.result.punch_suppressed = True
             self.warn(Diagnostic("SLIDE LIMITS EXCEEDED: NO PUNCHED OUTPUT (OPTION 110 = 2)"))

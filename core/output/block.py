@@ -76,6 +76,10 @@ class Block:
     radius: float | None = None  # CIRRAD of a circular block
     rapid: bool = False
     rotary: tuple[int, float] | None = None  # a rotary block's cell and travel in degrees
+    # the time this block takes: cutting (feed and rapid moves) and dwelling (CUTIME, DWTIME)
+    cut_minutes: float = 0.0
+    dwell_minutes: float = 0.0
+    stop: bool = False  # a STOP or OPSTOP block (option 148 < 0 dwells only in these)
     f_format: float | None = None  # REGFOR(11) for this block under inverse time
     # set by the output element: the printed value of each register output, and the tape line
     words: tuple[tuple[int, str], ...] = ()

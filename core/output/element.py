@@ -15,7 +15,7 @@ from gecent.core.absent import ABSENT, Absent
 from gecent.core.errors import Diagnostic
 from gecent.core.feed.contour import FeedCommand, RapidCommand
 from gecent.core.feed.optimise import FeedOptimiser
-from gecent.core.motion.gcode import CircularCodes, LinearCodes, RotaryCodes
+from gecent.core.motion.gcode import CircularCodes, DimensionCode, LinearCodes, RotaryCodes
 from gecent.core.motion.limits import SlideLimits
 from gecent.core.output.block import Block, Code
 from gecent.core.output.marks import stand_in
@@ -37,6 +37,8 @@ MOTION_CODES = frozenset({Code.LINEAR}) | CIRCLE_CODES
 UNSHUFFLED = frozenset({Code.DWELL})
 # numeric blocks that get TABLEG(5) when they have no G and option 38 = +-1 (001 L24890-24907)
 G_FILLED = frozenset({Code.NONMOTION, Code.AUX_ONLY, Code.END, Code.DWELL})
+# non-motion blocks that may carry an option-98 F or an option-148 dwell (001 L9204-9258)
+NON_MOTION_DWELL = frozenset({Code.NONMOTION, Code.G_ONLY, Code.END})
 
 
 class OutputElement:
@@ -49,9 +51,17 @@ class OutputElement:
         self.feed = FeedCommand(machine)
         self.rapid = RapidCommand(machine)
         self.cut_minutes = 0.0
+        self.dwell_minutes = 0.0
         self.words = WordFormatter(machine)
         self.optimiser = FeedOptimiser(machine, self.linear_codes, self.feed, self.words.shuffle)
         self.slide_limits = SlideLimits(machine, self.words.shuffle)
+        # the F-register dwell's G: TABLEG(5), else the smallest code from G11 (GDIMUL 1) up
+        dwell_g = machine.tableg[5]
+        self.dwell_code = (
+            DimensionCode(int(dwell_g), 5, 1.0)
+            if dwell_g is not ABSENT
+            else next((c for c in self.linear_codes.codes[1:] if c is not None), None)
+        )
         per_degree = {0.0: 1 / 360, 1.0: 1.0, -1.0: 100 / 360}.get(machine.number_option(118), 1.0)
         self.rotary_codes = RotaryCodes(machine, machine.number_option(111) * per_degree)
         dwell_g = machine.tableg[5]
@@ -94,8 +104,13 @@ class OutputElement:
             self._motion(block)
         elif block.code is Code.ROTARY_INCREMENTAL:
             self._rotary(block)
-        elif block.code in G_FILLED and block.cells[2] is ABSENT:
-            block.cells[2] = self.fill_g
+        else:
+            if block.code in NON_MOTION_DWELL or block.code is Code.DWELL:
+                self._non_motion_dwell(block)
+            if block.code in G_FILLED and block.cells[2] is ABSENT:
+                block.cells[2] = self.fill_g
+        if block.dwell_minutes:
+            self.dwell_minutes += block.dwell_minutes
         block.cells[12] = state.pending.spindle
         block.cells[14] = state.pending.m_code
         state.pending.spindle = ABSENT
@@ -112,14 +127,48 @@ class OutputElement:
         self.emitted.append(block)
 
     def dwell(self, seconds: float) -> Block:
-        """A dwell block: G = TABLEG(5), the time divided by option 56 in the option-57
-        register (001 L16315-16330, L25109-25140)."""
-        machine = self.state.machine
+        """A dwell block (CODE +4, manual §4.10, 001 L16296-16373): G = TABLEG(5) and the
+        time divided by option 56 in the option-57 register; or, with option 57 = 11, the
+        F-register dwell F = 60 GDIMUL / t under the dwell G or the smallest dimension code
+        from G11 up, whose multiplier scales the control's time (001 L16341-16370)."""
         block = Block(Code.DWELL)
+        block.dwell_minutes = seconds / 60.0
+        self._put_dwell(block, seconds)
+        return block
+
+    def _put_dwell(self, block: Block, seconds: float) -> None:
+        machine = self.state.machine
+        register = int(machine.number_option(57))
+        if register == 11:
+            code = self.dwell_code
+            block.cells[2] = ABSENT if code is None else float(code.code)
+            multiplier = 1.0 if code is None else max(code.gdimul, 1.0)
+            block.cells[11] = 60.0 * multiplier / seconds if seconds else ABSENT
+            self.words.previous_f = ABSENT  # the F dwell overwrote the control's feed
+            return
         dwell_g = machine.tableg[5]
         block.cells[2] = ABSENT if dwell_g is ABSENT else float(dwell_g)
-        block.cells[int(machine.number_option(57))] = seconds / (machine.number_option(56) or 1.0)
-        return block
+        block.cells[register] = seconds / (machine.number_option(56) or 1.0)
+
+    def _non_motion_dwell(self, block: Block) -> None:
+        """Options 98 and 148 (001 L25585-25602, L26140-26152): an F momentary dwell in
+        non-motion blocks (+N: not in dwell blocks; -N: in them too), with G = TABLEG(5);
+        or an N-second G04 dwell in every non-motion block (+N) or in STOP/OPSTOP blocks
+        only (-N). The manual forbids both at once; option 98 wins."""
+        machine = self.state.machine
+        momentary = machine.number_option(98)
+        if momentary and (block.code is not Code.DWELL or momentary < 0):
+            if block.cells[11] is ABSENT:
+                block.cells[11] = abs(momentary)
+                self.words.previous_f = ABSENT
+            if block.cells[2] is ABSENT and machine.tableg[5] is not ABSENT:
+                block.cells[2] = float(machine.tableg[5])
+            return
+        seconds = machine.number_option(148)
+        if block.code is Code.DWELL or not seconds or (seconds < 0 and not block.stop):
+            return
+        self._put_dwell(block, abs(seconds))
+        block.dwell_minutes += abs(seconds) / 60.0
 
     def store_m(self, code: float) -> None:
         """STOREM (001 L38041-38087): one M code waits for the next block; a second one
@@ -151,7 +200,8 @@ class OutputElement:
             block.cells[11] = ABSENT if rapid is None else rapid
             block.cells[19] = ipm
             block.rapid = True
-            self.cut_minutes += sum(d * d for d in departures) ** 0.5 / ipm
+            block.cut_minutes = sum(d * d for d in departures) ** 0.5 / ipm
+            self.cut_minutes += block.cut_minutes
             return
         if feed.programmed is None and not self._assumed_feed:
             self._assumed_feed = True
@@ -174,9 +224,10 @@ class OutputElement:
         if block.code in CIRCLE_CODES:
             assert block.radius is not None
             arc = _arc_length(block, self.step)
-            self.cut_minutes += arc / ipm
+            block.cut_minutes = arc / ipm
         else:
-            self.cut_minutes += length / ipm
+            block.cut_minutes = length / ipm
+        self.cut_minutes += block.cut_minutes
 
     def _rotary(self, block: Block) -> None:
         """An incremental rotary block: SELGRO's G code, and the feed over the arc the part
@@ -201,7 +252,8 @@ class OutputElement:
         block.cells[11] = command
         block.cells[19] = ipm
         block.f_format = f_format
-        self.cut_minutes += length / ipm
+        block.cut_minutes = length / ipm
+        self.cut_minutes += block.cut_minutes
 
     # -- GEOUT: words and the tape line (flow chart 12) ----------------------------------
 
@@ -211,11 +263,10 @@ class OutputElement:
             return
         if block.code not in UNSHUFFLED:
             self.words.shuffle_block(block)
-        words = self.words.words(
-            block,
-            suppress=block.code in MOTION_CODES or block.code is Code.ROTARY_INCREMENTAL,
-            sequence=self.state.sequence,
-        )
+        motion = block.code in MOTION_CODES or block.code is Code.ROTARY_INCREMENTAL
+        words = self.words.words(block, suppress=motion, sequence=self.state.sequence)
+        if not motion and block.cells[2] is not ABSENT:
+            self.words.previous_g = ABSENT  # a G04 or other G came between: repeat the motion G
         block.words = tuple((location, printed) for location, _, printed, _ in words)
         if block.punched:
             punch = "".join(letter + punched for _, letter, _, punched in words)

@@ -17,9 +17,9 @@ Handler = Callable[["Run", Statement], None]
 
 
 def handlers() -> dict[str, Handler]:
-    from gecent.core.statements import feed, machine, spindle_tool, tape, text
+    from gecent.core.statements import delay, feed, machine, spindle_tool, tape, text
 
     table: dict[str, Handler] = {}
-    for module in (text, machine, feed, tape, spindle_tool):
+    for module in (text, machine, feed, tape, spindle_tool, delay):
         table.update(module.HANDLERS)
     return table

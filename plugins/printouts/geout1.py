@@ -9,6 +9,7 @@ times at the bottom of every page and the tape length on the last one. Pages hol
 from __future__ import annotations
 
 from dataclasses import dataclass
+from math import ceil
 
 from gecent.core.absent import ABSENT
 from gecent.core.errors import NotYetSupported
@@ -180,24 +181,30 @@ class Geout1:
             text = text[:1] + "/" + text[2:]
         return text
 
-    def render(
-        self,
-        machine: MachineDefinition,
-        blocks: list[Block],
-        partno: str,
-        cut_minutes: float = 0.0,
-        dwell_minutes: float = 0.0,
-    ) -> str:
+    def render(self, machine: MachineDefinition, blocks: list[Block], partno: str) -> str:
+        """The pages, each ending with the cut and dwell times accumulated to it; the last
+        with the tape footage (001 L9447-9449; sample footer L10557-10558)."""
         layout = columns(machine)
-        lines = [self.line(machine, layout, block) for block in blocks if block.printed]
         per_page = max(1, int(machine.number_option(79)))
-        pages = [
-            {"number": n + 1, "lines": lines[start : start + per_page]}
-            for n, start in enumerate(range(0, max(len(lines), 1), per_page))
-        ]
+        pages: list[dict[str, object]] = []
+        lines: list[str] = []
+        cut = dwell = 0.0
+        for block in blocks:
+            cut += block.cut_minutes
+            dwell += block.dwell_minutes
+            if not block.printed:
+                continue
+            lines.append(self.line(machine, layout, block))
+            if len(lines) == per_page:
+                pages.append({"number": len(pages) + 1, "lines": lines, "cut": cut, "dwell": dwell})
+                lines = []
+        if lines or not pages:
+            pages.append({"number": len(pages) + 1, "lines": lines, "cut": cut, "dwell": dwell})
+        pages[-1]["cut"], pages[-1]["dwell"] = cut, dwell
         title = machine.title or (
             f"MACHINE {machine.number}" if machine.number else "STANDARD MACHINE"
         )
+        feet = tape_feet(tape_lines(blocks), stand_in(machine, 64))
         return (
             environment()
             .get_template(self.template)
@@ -206,9 +213,7 @@ class Geout1:
                 title=title,
                 partno=partno,
                 heading=heading(machine),
-                cut_minutes=cut_minutes,
-                dwell_minutes=dwell_minutes,
-                tape_feet=tape_feet(tape_lines(blocks), stand_in(machine, 64)),
+                tape_feet=ceil(feet - 1e-9),
             )
         )
 
