@@ -24,6 +24,7 @@ from gecent.core.cl.records import (
     Surface,
 )
 from gecent.core.cl.stream import read_cl
+from gecent.core.cl.vocabulary import vocabulary
 from gecent.core.errors import Diagnostic, InputError, NotYetSupported, SourcePosition
 from gecent.core.feed.rapid import RapidTraverse
 from gecent.core.machine.definition import MachineDefinition
@@ -161,9 +162,12 @@ class Run:
                 self._motion_record(record)
             elif isinstance(record, Statement):
                 handler = self._statements.get(record.major)
-                if handler is None:
+                if handler is not None:
+                    handler(self, record)
+                elif record.major in vocabulary().gecent_majors:
                     raise NotYetSupported(f"{record.major} statement", record.where)
-                handler(self, record)
+                else:  # "not recognized ... therefore, disregarded" (001 L3203-3205)
+                    self.warn(Diagnostic(f"{record.major} {UNKNOWN_WORD}", record.where))
             elif isinstance(record, Arelem):
                 self._arelem(record)
             elif isinstance(record, Circle):
@@ -206,6 +210,11 @@ class Run:
             )
         if len(record.points[0]) == 6:
             raise NotYetSupported("multiaxis motion", record.where)
+        modes = self.state.modes
+        if modes.ended:
+            modes.ended = False
+            if record.subtype is not MotionSubtype.FROM:
+                self.warn(Diagnostic(AFTER_END, record.where))
         if record.subtype is not MotionSubtype.FROM:
             feed = self.state.feed
             if feed.rapid_requested or feed.rapid_mode:
@@ -242,6 +251,9 @@ class Run:
             corner = record.values[1] if len(record.values) > 1 else 0.0
             tolerances.ball = abs(corner - tolerances.cutter_radius) < 1e-6
 
+
+AFTER_END = "END OR RESET HAS NOT BEEN FOLLOWED BY A FROM POINT."  # comment 47 (L34080)
+UNKNOWN_WORD = "IS NOT A GECENT III POSTPROCESSOR WORD; STATEMENT DISREGARDED"
 
 _TYPE_NAMES = {"MOTION": "5000", "CIRCLE": "3000", "ARELEM": "6000", "MULTIAX": "9000"}
 

@@ -74,6 +74,27 @@ class Tolerances:
 
 
 @dataclass(slots=True)
+class Modes:
+    """FLONKL and ICLMOD (coolant), STOPON (a stop was given), ENDFLG (END given, a FROM
+    must follow), ORGIN (the ORIGIN for the operator printout) (001 L16980-16988,
+    L17085-17093, L17395-17403, L18529-18535)."""
+
+    coolant_on: bool = False
+    coolant_mode: int = 0  # 0: option 33's mode
+    stopped: bool = False
+    ended: bool = False
+    origin: tuple[float, float, float] = (0.0, 0.0, 0.0)
+
+
+@dataclass(slots=True)
+class Numbering:
+    """SEQNO: ``series`` gives the next N and the increment; ``off`` drops N words."""
+
+    series: tuple[int, int] | None = None
+    off: bool = False
+
+
+@dataclass(slots=True)
 class PostState:
     machine: MachineDefinition
     position: Position = field(default_factory=Position)
@@ -82,5 +103,7 @@ class PostState:
     spindle: Spindle = field(default_factory=Spindle)
     tool: Tool = field(default_factory=Tool)
     tolerances: Tolerances = field(default_factory=Tolerances)
+    modes: Modes = field(default_factory=Modes)
+    numbering: Numbering = field(default_factory=Numbering)
     sequence: int = 0  # SEQCTR: the CL record number of the record being processed
     skipping: bool = False  # SKPFLG (OPSKIP)

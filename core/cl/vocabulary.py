@@ -24,6 +24,7 @@ class Vocabulary:
     record_subtype: dict[str, int]
     units_value: dict[str, int]
     apt4_major: dict[str, int]
+    gecent_majors: frozenset[str] = frozenset()
 
     def major_code(self, name: str) -> int | None:
         return self.major.get(name)
@@ -61,4 +62,5 @@ def vocabulary() -> Vocabulary:
         {str(k): int(v) for k, v in data.get("record_subtype", {}).items()},
         {str(k): int(v) for k, v in data.get("units_value", {}).items()},
         {str(k): int(v) for k, v in data.get("major_apt4", {}).items()},
+        frozenset(str(w) for w in data.get("gecent_major", {}).get("words", ())),
     )

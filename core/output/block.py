@@ -80,6 +80,7 @@ class Block:
     cut_minutes: float = 0.0
     dwell_minutes: float = 0.0
     stop: bool = False  # a STOP or OPSTOP block (option 148 < 0 dwells only in these)
+    skipped: bool = False  # output under OPSKIP/ON: "/" before the block
     f_format: float | None = None  # REGFOR(11) for this block under inverse time
     # set by the output element: the printed value of each register output, and the tape line
     words: tuple[tuple[int, str], ...] = ()
@@ -108,4 +109,7 @@ class Block:
 
     @property
     def printed(self) -> bool:
+        """Filler cards (leader blocks without text) are punched, not printed."""
+        if self.code is Code.LEADER and self.text is None:
+            return False
         return self.code not in NOT_PRINTED

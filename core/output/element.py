@@ -96,10 +96,10 @@ class OutputElement:
     def _output(self, block: Block) -> None:
         state = self.state
         block.cells[15] = float(int(block.code))
-        sequence = block.record if block.record is not None else state.sequence
-        if sequence > self.sequence_limit:
-            sequence %= self.sequence_limit  # "N = N modulus SEQLIM" (001 L9117-9126)
-        block.cells[1] = float(-sequence if state.skipping else sequence)
+        if block.code is Code.FROM and state.pending.m_code is not ABSENT:
+            self.output(Block(Code.AUX_ONLY, block.record))  # "forced out" (001 L31370-31374)
+        block.skipped = state.skipping
+        block.cells[1] = self._sequence_number(block)
         if block.code in MOTION_CODES:
             self._motion(block)
         elif block.code is Code.ROTARY_INCREMENTAL:
@@ -116,6 +116,28 @@ class OutputElement:
         state.pending.spindle = ABSENT
         state.pending.m_code = ABSENT
         self._emit(block)
+
+    def _sequence_number(self, block: Block) -> float | Absent:
+        """N: the CL record number (option 143 = 0), or the SEQNO series, or none after
+        SEQNO/OFF; negative under OPSKIP; above SEQLIM, N modulus SEQLIM (001 L9117-9126,
+        L37337-37373)."""
+        state = self.state
+        numbering = state.numbering
+        if numbering.off:
+            return ABSENT
+        if numbering.series is not None and block.punched:
+            sequence, increment = numbering.series
+            numbering.series = (sequence + increment, increment)
+        else:
+            sequence = block.record if block.record is not None else state.sequence
+        if sequence > self.sequence_limit:
+            sequence %= self.sequence_limit
+        return float(-sequence if state.skipping else sequence)
+
+    def flush_m(self, record: int | None = None) -> None:
+        """STOREM(130): a waiting M code goes out in a block of its own now."""
+        if self.state.pending.m_code is not ABSENT:
+            self.output(Block(Code.AUX_ONLY, record))
 
     def _tmark(self, block: Block) -> None:
         """No N: the end-of-record code stands in its place; the pending S and M wait for
@@ -270,8 +292,7 @@ class OutputElement:
         block.words = tuple((location, printed) for location, _, printed, _ in words)
         if block.punched:
             punch = "".join(letter + punched for _, letter, _, punched in words)
-            skip = block.cells[1] is not ABSENT and float(block.cells[1]) < 0
-            block.punch = "/" + punch if skip else punch
+            block.punch = "/" + punch if block.skipped else punch
         self.emitted.append(block)
 
 

@@ -17,6 +17,7 @@ from gecent.core.errors import InputError
 
 CODES = ("eia", "ascii")
 NOT_PUNCHED = " ."
+CARD_FRAMES = 72  # one 72-column card of the tape image
 
 
 @cache
@@ -30,14 +31,18 @@ def punch(lines: Iterable[str], code: str, leader: str = "(", tmark: str = "=") 
 
     Two stand-ins of the machine's options 64 and 65 are punched as control codes: a line
     made only of the leader stand-in is leader (no end of block), and the TMARK stand-in at
-    the start of a line is the end-of-record (rewind stop) code."""
+    the start of a line is the end-of-record (rewind stop) code. An empty line is a blank
+    card: 72 frames of blank tape (feed holes only), the option-11 filler after END."""
     if code not in CODES:
         raise InputError(f"unknown tape code {code!r} (eia or ascii)")
     codes = table(code)
     end_of_block = codes["EOB"]
     frames = bytearray()
     for number, line in enumerate(lines, start=1):
-        if line and line.strip(leader) == "":
+        if not line:
+            frames.extend(bytes([codes["BLANK_TAPE"]]) * CARD_FRAMES)
+            continue
+        if line.strip(leader) == "":
             frames.extend(bytes([codes["LEADER"]]) * len(line))
             continue
         if line.startswith(tmark):
@@ -59,23 +64,36 @@ def punch(lines: Iterable[str], code: str, leader: str = "(", tmark: str = "=") 
 def unpunch(frames: bytes, code: str, leader: str = "(", tmark: str = "=") -> list[str]:
     """Read frames back into tape image lines (for tests and for checking a tape).
 
-    A run of leader frames becomes a line of the leader stand-in; the end-of-record code
-    at the start of a block becomes the TMARK stand-in unless it is a character of this
-    code (ASCII's rewind stop is "%")."""
+    A run of leader frames becomes a line of the leader stand-in, each card of blank tape
+    an empty line (in ASCII, whose leader is blank tape, blank tape reads as leader); the
+    end-of-record code at the start of a block becomes the TMARK stand-in unless it is a
+    character of this code (ASCII's rewind stop is "%")."""
     codes = table(code)
     characters = {v: k for k, v in reversed(list(codes.items())) if len(k) == 1}
     end_of_block, leader_frame = codes["EOB"], codes["LEADER"]
-    rewind_stop = codes["REWIND_STOP"]
+    blank, rewind_stop = codes["BLANK_TAPE"], codes["REWIND_STOP"]
     lines: list[str] = []
     current: list[str] = []
-    leading = 0
+    run_frame, run_length = -1, 0
+
+    def close_run() -> None:
+        nonlocal run_length
+        if run_length and run_frame == leader_frame:
+            lines.append(leader * run_length)
+        elif run_length:
+            if run_length % CARD_FRAMES:
+                raise ValueError(f"{run_length} frames of blank tape are not whole cards")
+            lines.extend([""] * (run_length // CARD_FRAMES))
+        run_length = 0
+
     for frame in frames:
-        if frame == leader_frame and not current:
-            leading += 1
+        if frame in (leader_frame, blank) and not current:
+            if run_length and frame != run_frame:
+                close_run()
+            run_frame = frame
+            run_length += 1
             continue
-        if leading:
-            lines.append(leader * leading)
-            leading = 0
+        close_run()
         if frame == end_of_block:
             lines.append("".join(current))
             current = []
@@ -85,8 +103,7 @@ def unpunch(frames: bytes, code: str, leader: str = "(", tmark: str = "=") -> li
             current.append(characters[frame])
         else:
             raise ValueError(f"frame {frame:#04x} is not a {code.upper()} character")
-    if leading:
-        lines.append(leader * leading)
+    close_run()
     if current:
         raise ValueError("the tape ends inside a block (no end-of-block code)")
     return lines

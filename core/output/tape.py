@@ -17,7 +17,9 @@ def tape_lines(blocks: Iterable[Block]) -> list[str]:
             continue
         if block.code in TEXT_CODES:
             # Text blocks are already BCD: punched as written (blanks are never punched).
-            lines.append((block.text or "").replace(" ", ""))
+            text = (block.text or "").replace(" ", "")
+            if text:  # an empty line would be a blank card
+                lines.append(text)
         elif block.punch is not None:
             lines.append(block.punch)
         else:
@@ -32,6 +34,8 @@ def tape_image(blocks: Iterable[Block]) -> str:
 
 def tape_feet(lines: Iterable[str], leader: str = "(") -> float:
     """Tape length: one frame per character plus the end-of-block frame (none after
-    leader)."""
-    frames = sum(len(line) + (0 if line and line.strip(leader) == "" else 1) for line in lines)
+    leader); an empty line is a blank card of 72 frames."""
+    frames = sum(
+        72 if not line else len(line) + (0 if line.strip(leader) == "" else 1) for line in lines
+    )
     return frames / FRAMES_PER_INCH / 12.0

@@ -17,9 +17,18 @@ Handler = Callable[["Run", Statement], None]
 
 
 def handlers() -> dict[str, Handler]:
-    from gecent.core.statements import delay, feed, machine, spindle_tool, tape, text
+    from gecent.core.statements import (
+        auxiliary,
+        coordinates,
+        delay,
+        feed,
+        machine,
+        spindle_tool,
+        tape,
+        text,
+    )
 
     table: dict[str, Handler] = {}
-    for module in (text, machine, feed, tape, spindle_tool, delay):
+    for module in (text, machine, feed, tape, spindle_tool, delay, auxiliary, coordinates):
         table.update(module.HANDLERS)
     return table

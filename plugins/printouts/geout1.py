@@ -146,12 +146,21 @@ class Geout1:
     section: str = "§3.5.4"
     template: str = "geout1.j2"
 
-    def line(self, machine: MachineDefinition, layout: list[Column], block: Block) -> str:
+    def line(
+        self,
+        machine: MachineDefinition,
+        layout: list[Column],
+        block: Block,
+        origin: tuple[float, float, float] = (0.0, 0.0, 0.0),
+    ) -> str:
+        """One block's line; the operator columns (option 172 = 1) are the absolute values
+        less the ORIGIN (001 L9128-9134)."""
         if block.code in TEXT_CODES or block.code is Code.LEADER:
             return block.text or ""
         if block.code not in PRINTABLE:
             raise NotYetSupported(f"GEOUT1 line for a CODE {int(block.code)} block")
         step = machine.number_option(14)
+        operator = 1.0 if machine.number_option(172) == 1 else 0.0
         shuffle = cell_map(machine.number_option(59), "XYZ")
         printed = dict(block.words)
         fields: list[tuple[Column, str]] = []
@@ -166,7 +175,8 @@ class Geout1:
                 fmt = machine.registers.formats[cell]
                 for internal, target in enumerate(shuffle):
                     if target is not None and target[0] == cell and fmt is not None:
-                        value = target[1] * block.position[internal] * step
+                        at = block.position[internal] * step - operator * origin[internal]
+                        value = target[1] * at
                         fields.append((column, _absolute(value, fmt.right)))
             elif key == "F-IPM" and block.cells[19] is not ABSENT:
                 fields.append((column, f"{float(block.cells[19]):.3f}".rstrip("0")))
@@ -189,12 +199,16 @@ class Geout1:
         pages: list[dict[str, object]] = []
         lines: list[str] = []
         cut = dwell = 0.0
+        origin = (0.0, 0.0, 0.0)
         for block in blocks:
+            if block.code is Code.INFORMATION and block.cells[2] == 2.0:
+                x, y, z = (block.cells[k] for k in (3, 4, 5))
+                origin = (float(x), float(y), float(z))  # type: ignore[arg-type]
             cut += block.cut_minutes
             dwell += block.dwell_minutes
             if not block.printed:
                 continue
-            lines.append(self.line(machine, layout, block))
+            lines.append(self.line(machine, layout, block, origin))
             if len(lines) == per_page:
                 pages.append({"number": len(pages) + 1, "lines": lines, "cut": cut, "dwell": dwell})
                 lines = []
