@@ -10,6 +10,7 @@ from __future__ import annotations
 from collections.abc import Iterator
 from dataclasses import dataclass, field
 
+from gecent.core.absent import ABSENT
 from gecent.core.cl.records import (
     Arelem,
     Circle,
@@ -33,6 +34,7 @@ from gecent.core.machine.selection import (
     resolve_machine,
 )
 from gecent.core.motion.circle import CircularMotion
+from gecent.core.motion.cycles import Cycle, cycle_legs
 from gecent.core.motion.linear import LinearMotion, godlta_delta
 from gecent.core.motion.rotary import RotaryElement
 from gecent.core.output.block import Block, Code
@@ -76,6 +78,8 @@ class Run:
         self._spindle: SpindleElement | None = None
         self._tool_element: ToolElement | None = None
         self._rotary: RotaryElement | None = None
+        self.cycle: Cycle | None = None  # the canned cycle in force (CYCFLG, ICYTYP)
+        self.cycle_first_z: float | None = None
         self._statements = handlers()
         self._statements["UNITS"] = lambda run, statement: run.units.set_units(statement)
 
@@ -215,6 +219,9 @@ class Run:
             modes.ended = False
             if record.subtype is not MotionSubtype.FROM:
                 self.warn(Diagnostic(AFTER_END, record.where))
+        if self.cycle is not None and record.subtype is not MotionSubtype.FROM:
+            self._cycle_points(record)
+            return
         if record.subtype is not MotionSubtype.FROM:
             feed = self.state.feed
             if feed.rapid_requested or feed.rapid_mode:
@@ -222,6 +229,47 @@ class Run:
         if self.circle.begin(record):
             return
         self.motion.record(record)
+
+    def _cycle_points(self, record: Motion) -> None:
+        """Each point of a record under CYCLE is a hole: its moves go through the rapid and
+        linear elements as ordinary one-point records with the record's number."""
+        assert self.cycle is not None
+        position = self.state.position
+        tx, ty, tz = position.translation
+        for point in record.points:
+            if record.subtype is MotionSubtype.GODLTA:
+                delta = godlta_delta(point)
+                hole = tuple(position.previous_part[k] + delta[k] for k in range(3))
+                hole = (hole[0] - tx, hole[1] - ty, hole[2] - tz)
+            else:
+                hole = (point[0], point[1], point[2])
+            at = (
+                position.previous_part[0] - tx,
+                position.previous_part[1] - ty,
+                position.previous_part[2] - tz,
+            )
+            if self.cycle_first_z is None:
+                self.cycle_first_z = at[2]
+            for leg in cycle_legs(self.cycle, at, hole, self.cycle_first_z):
+                if leg.dwell:
+                    block = self.output.dwell(leg.dwell)
+                    block.record = record.number
+                    self.output.output(block)
+                if (
+                    leg.m_code_cell is not None
+                    and self.machine.tablem[leg.m_code_cell] is not ABSENT
+                ):
+                    self.output.store_m(float(self.machine.tablem[leg.m_code_cell]))  # type: ignore[arg-type]
+                self._leg(record, leg.point, leg.rapid)
+
+    def _leg(self, record: Motion, point: tuple[float, float, float], rapid: bool) -> None:
+        leg = Motion(record.file, record.line, record.number, MotionSubtype.GOTO, (point,))
+        feed = self.state.feed
+        if rapid:
+            self.rapid.request()
+        if feed.rapid_requested or feed.rapid_mode:
+            self.rapid.motion(self._path_length(leg))
+        self.motion.record(leg)
 
     def _path_length(self, record: Motion) -> float:
         """PLENTH: the length of the whole record's path from the previous point."""

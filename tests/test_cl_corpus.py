@@ -224,17 +224,6 @@ def test_creo_drilling_cycle_words() -> None:
 
 
 @needs_corpus
-def test_post_stops_at_cycle_on_creo_drilling(tmp_path: Path) -> None:
-    tape = tmp_path / "b.tape"
-    result = CliRunner().invoke(main, ["post", str(CREO / "bohren_1.ncl.8"), "-o", str(tape)])
-    assert result.exit_code == 3
-    assert result.stderr.strip().endswith(
-        "bohren_1.ncl.8:16 (record 14): error: not yet supported: CYCLE statement"
-    )
-    assert not tape.exists()
-
-
-@needs_corpus
 def test_post_reads_binary_cl(tmp_path: Path) -> None:
     """The APT IV binary file posts on the Standard Machine (MACHIN/MILL names another
     postprocessor): FROM, then four feed moves; the tape equals the one its part program

@@ -5,11 +5,10 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
-import pytest
 from click.testing import CliRunner
 from gecent.core.cli import main
 
-from .conftest import ROOT, SHARED
+from .conftest import ROOT
 
 HELLO = ROOT / "examples" / "hello.apt"
 
@@ -123,16 +122,3 @@ def test_malformed_statement_is_exit_2_with_position(tmp_path: Path) -> None:
     source.write_text("PARTNO X\nGOTO / 1, 2,, 3\nFINI\n")
     code, _, err = run("post", str(source))
     assert code == 2 and err.startswith(f"{source}:2:13: error: expected a value before ','")
-
-
-@pytest.mark.skipif(not (SHARED / "corpus").is_dir(), reason="shared corpus not present")
-def test_corpus_file_stops_at_the_first_unbuilt_statement() -> None:
-    code, _, err = run(
-        "post",
-        str(SHARED / "corpus" / "creo" / "bohren_1.ncl.8"),
-        "-o",
-        "/dev/null",
-        "--listing",
-        "/dev/null",
-    )
-    assert code == 3 and "bohren_1.ncl.8:16 (record 14): error: not yet supported: CYCLE" in err

@@ -20,6 +20,7 @@ def handlers() -> dict[str, Handler]:
     from gecent.core.statements import (
         auxiliary,
         coordinates,
+        cycle,
         delay,
         feed,
         machine,
@@ -29,6 +30,7 @@ def handlers() -> dict[str, Handler]:
     )
 
     table: dict[str, Handler] = {}
-    for module in (text, machine, feed, tape, spindle_tool, delay, auxiliary, coordinates):
+    modules = (text, machine, feed, tape, spindle_tool, delay, auxiliary, coordinates, cycle)
+    for module in modules:
         table.update(module.HANDLERS)
     return table
