@@ -41,6 +41,7 @@ from gecent.core.output.block import Block, Code
 from gecent.core.output.element import OutputElement
 from gecent.core.output.format import FormatOverflow
 from gecent.core.plugins import PluginSet, get_plugins
+from gecent.core.reinstate import restat
 from gecent.core.spindle import SpindleElement
 from gecent.core.state import PostState
 from gecent.core.statements import handlers
@@ -219,6 +220,8 @@ class Run:
             modes.ended = False
             if record.subtype is not MotionSubtype.FROM:
                 self.warn(Diagnostic(AFTER_END, record.where))
+        if modes.stopped and record.subtype is not MotionSubtype.FROM:
+            restat(self, record.number)
         if self.cycle is not None and record.subtype is not MotionSubtype.FROM:
             self._cycle_points(record)
             return

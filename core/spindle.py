@@ -20,6 +20,7 @@ from gecent.core.errors import Diagnostic, InputError, NotYetSupported, SourcePo
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.output.block import Block, Code
 from gecent.core.output.element import OutputElement
+from gecent.core.reinstate import SPINDLE_COMMAND, SPINDLE_M, SPINDLE_RANGE
 from gecent.core.state import PostState
 
 CLW, CCLW = 1, -1
@@ -131,6 +132,9 @@ class SpindleElement:
                 self.warn(Diagnostic(comment, where))
             spindle.speed, spindle.range = selection.speed, selection.range
             self.state.pending.spindle = selection.command
+            self.state.remember(SPINDLE_COMMAND, selection.command)
+            self.state.remember(SPINDLE_RANGE, float(selection.range))
+        self.state.remember(SPINDLE_M, self._code(_M_CELL[direction]))
         self.output.output(Block(Code.NONMOTION, statement.number))
 
     def _off(self, statement: Statement) -> None:
@@ -146,7 +150,12 @@ class SpindleElement:
             self.output.output(Block(Code.NONMOTION, statement.number))
             return
         self._store(_OFF_CELL, statement.where)
+        self.state.remember(SPINDLE_M, None)
         self.output.output(Block(Code.AUX_ONLY, statement.number))
+
+    def _code(self, cell: int) -> float | None:
+        code = self.state.machine.tablem[cell]
+        return None if code is ABSENT else float(code)
 
     def _store(self, cell: int, where: SourcePosition) -> None:
         code = self.state.machine.tablem[cell]

@@ -10,6 +10,7 @@ from dataclasses import dataclass, field
 
 from gecent.core.absent import ABSENT, Absent
 from gecent.core.machine.definition import MachineDefinition
+from gecent.core.reinstate import StateVector
 
 
 @dataclass(slots=True)
@@ -105,5 +106,10 @@ class PostState:
     tolerances: Tolerances = field(default_factory=Tolerances)
     modes: Modes = field(default_factory=Modes)
     numbering: Numbering = field(default_factory=Numbering)
+    conditions: StateVector = field(default_factory=StateVector)  # STATE(12), option 145
     sequence: int = 0  # SEQCTR: the CL record number of the record being processed
     skipping: bool = False  # SKPFLG (OPSKIP)
+
+    def remember(self, slot: int, value: float | None) -> None:
+        """Record a condition in STATE; while stopped it counts as given again."""
+        self.conditions.store(slot, value, self.modes.stopped)

@@ -13,6 +13,7 @@ from gecent.core.absent import ABSENT
 from gecent.core.cl.records import Statement, Word
 from gecent.core.errors import InputError, NotYetSupported
 from gecent.core.output.element import OutputElement
+from gecent.core.reinstate import T_CODE
 from gecent.core.state import PostState
 
 
@@ -39,6 +40,8 @@ class ToolElement:
             raise NotYetSupported(f"{statement.major} on a lathe (TOOLL)", statement.where)
         tool = numbers[0]
         self.state.tool.number = tool
+        if machine.registers.formats[13] is not None:
+            self.state.remember(T_CODE, tool)
         change = machine.tablem[7]
         if change is not ABSENT:
             self.output.store_m(float(change))

@@ -14,6 +14,7 @@ from collections.abc import Callable
 
 from gecent.core.absent import ABSENT
 from gecent.core.output.block import Block
+from gecent.core.reinstate import FEED_M
 from gecent.core.state import PostState
 
 ONE_SHOT, MODAL = 1, -1
@@ -87,6 +88,8 @@ class RapidTraverse:
             feed.rapid_ipm, feed.rapid_low = self.range_top, True
             return
         self._shift(self.into_codes, self.into_dwell)
+        if self.shifting and self.into_codes:
+            self.state.remember(FEED_M, self.into_codes[-1])
         rate = self.rapid_rate
         reader = self.reader_time
         if reader > 0 and path_length > 0 and rate > path_length / reader:
@@ -101,6 +104,18 @@ class RapidTraverse:
         feed.rapid_mode, feed.rapid_ipm, feed.rapid_low = 0, 0.0, False
         if shifted:
             self._shift(self.back_codes, self.back_dwell)
+            if self.shifting and self.back_codes:
+                self.state.remember(FEED_M, self.back_codes[-1])
+
+    def entrap(self) -> None:
+        """ENTRAP (option 145 = -1 or -2): after a stop the machine is put in rapid gear, so
+        the restart finds it there; the first feed move shifts back (001 L30953-30990)."""
+        feed = self.state.feed
+        if self.shifting == 0 or not self.into_codes or feed.rapid_mode:
+            return
+        self._shift(self.into_codes, self.into_dwell)
+        self.state.remember(FEED_M, self.into_codes[-1])
+        feed.rapid_mode, feed.rapid_ipm, feed.rapid_low = ONE_SHOT, -self.rapid_rate, False
 
     def _shift(self, codes: tuple[float, ...], dwell: float) -> None:
         """The gear-shift blocks (001 L24979-24995, L24560-24569, L25367-25380; sample

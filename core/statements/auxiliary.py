@@ -14,9 +14,10 @@ from typing import TYPE_CHECKING
 
 from gecent.core.absent import ABSENT
 from gecent.core.cl.records import Statement
-from gecent.core.errors import Diagnostic, InputError, NotYetSupported
+from gecent.core.errors import Diagnostic, InputError
 from gecent.core.output.block import Block, Code
 from gecent.core.output.marks import leader_block, stand_in
+from gecent.core.reinstate import COOLANT
 from gecent.core.spindle import NOT_AVAILABLE
 
 if TYPE_CHECKING:
@@ -58,6 +59,7 @@ def coolnt(run: Run, statement: Statement) -> None:
     if code is None:
         code = _m_code(run, COOLANT_CELLS[4][0 if on else 1])
     modes.coolant_on = on
+    run.state.remember(COOLANT, code if on else None)
     if code is not None:
         run.output.store_m(code)
 
@@ -78,8 +80,9 @@ def _stop(run: Run, statement: Statement, cell: int) -> None:
         output.output(block)
     _spindle_and_coolant_off(run)
     run.state.modes.stopped = True
-    if run.machine.number_option(145) != 0:
-        raise NotYetSupported("automatic reinstatement (option 145)", statement.where)
+    run.state.conditions.respecified.clear()
+    if run.machine.number_option(145) in (-1.0, -2.0):
+        run.rapid.entrap()  # ENTRAP: the machine waits in rapid gear (001 L30953-30990)
 
 
 def stop(run: Run, statement: Statement) -> None:

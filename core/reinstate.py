@@ -1,0 +1,83 @@
+"""Automatic reinstatement of program conditions after STOP, OPSTOP and BREAK (manual
+§4.7, 001 L16024-16143; RESTAT/ENTRAP L35498-35573, L30953-30990; option 145), read in
+docs/research/statements-misc.md §5.
+
+The statements that set a condition record it in the STATE vector. A stop sets STOPON;
+under option 145 = -1 or -2 it also puts the machine in rapid gear (ENTRAP). At the next
+motion RESTAT outputs, slot by slot, every condition that was on before the stop and was
+not given again since: the tool, the spindle (S and its direction M), the feed or rapid
+gear, the coolant. A condition given again after the stop was output when given; the
+manual's negative-value mark for it is the ``respecified`` set here (decision: §4.7's
+reading, "negative = already output, skip").
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from gecent.core.run import Run
+
+T_CODE, SPINDLE_COMMAND, SPINDLE_M, SPINDLE_RANGE, SFM, FEED_M, FEED_M2, COOLANT, COOLANT2 = range(
+    1, 10
+)
+
+
+@dataclass(slots=True)
+class StateVector:
+    """STATE(1..9): the last value of each condition; ``None`` for an absent or OFF one."""
+
+    values: dict[int, float] = field(default_factory=dict)
+    respecified: set[int] = field(default_factory=set)
+
+    def store(self, slot: int, value: float | None, stopped: bool) -> None:
+        if value is None:
+            self.values.pop(slot, None)
+        else:
+            self.values[slot] = value
+        if stopped:
+            self.respecified.add(slot)
+
+    def due(self, slot: int) -> float | None:
+        """The value to reinstate, or None when absent or given again since the stop."""
+        if slot in self.respecified:
+            return None
+        return self.values.get(slot)
+
+
+def restat(run: Run, record: int) -> None:
+    """RESTAT, at the first motion after a stop: one block for the tool, one for the spindle
+    (S with its direction M), then the feed/rapid gear and coolant codes, which wait for
+    the motion block. Option 145 = -2 reinstates the rapid gear only (ENTRAP did it)."""
+    from gecent.core.output.block import Block, Code
+
+    state = run.state
+    option = run.machine.number_option(145)
+    conditions = state.conditions
+    if option in (1.0, -1.0):
+        output = run.output
+        tool = conditions.due(T_CODE)
+        if tool is not None:
+            block = Block(Code.NONMOTION, record)
+            block.cells[13] = tool
+            output.output(block)
+        direction = conditions.due(SPINDLE_M)
+        if direction is not None:
+            command = conditions.due(SPINDLE_COMMAND)
+            if command is not None:
+                state.pending.spindle = command
+            output.store_m(direction)
+            output.output(Block(Code.NONMOTION, record))
+            state.spindle.on = True
+        for slot in (FEED_M, FEED_M2):
+            gear = conditions.due(slot)
+            if gear is not None and option == 1.0:
+                output.store_m(gear)
+        for slot in (COOLANT, COOLANT2):
+            coolant = conditions.due(slot)
+            if coolant is not None:
+                output.store_m(coolant)
+                state.modes.coolant_on = True
+    state.modes.stopped = False
+    conditions.respecified.clear()
