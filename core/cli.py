@@ -27,6 +27,7 @@ from gecent.core.output.marks import stand_in
 from gecent.core.output.punch import punch
 from gecent.core.output.tape import tape_image
 from gecent.core.plugins import PluginSet, get_plugins
+from gecent.core.run import RunResult
 from gecent.core.run import post as run_post
 
 F = TypeVar("F", bound=Callable[..., Any])
@@ -220,7 +221,12 @@ def post(
     override: str | MachineDefinition | None = machine_key
     if machine_key is not None and (machine_key.endswith(".toml") or os.sep in machine_key):
         override = _load_machine(plugins, machine_key)
-    result = run_post(input_path, plugins, override)
+    try:
+        result = run_post(input_path, plugins, override)
+    except GecentError as error:
+        if isinstance(error.partial, RunResult):  # a fatal error: the listing and its dump
+            _write_stopped_listing(plugins, error.partial, input_path, listing_path)
+        raise
     layout = int(result.machine.number_option(164))
     printout = plugins.get("printouts", layout)
     if printout is None:
@@ -241,6 +247,20 @@ def post(
         write_atomically(punch_to[1], frames)  # type: ignore[index]
     for diagnostic in result.diagnostics:
         click.echo(str(diagnostic), err=True)
+
+
+def _write_stopped_listing(
+    plugins: PluginSet, result: RunResult, input_path: str, listing_path: str | None
+) -> None:
+    """The listing of what was output before a fatal error, then the GEDUMP dump."""
+    printout = plugins.get("printouts", int(result.machine.number_option(164)))
+    try:
+        text = printout.render(result.machine, result.blocks, result.partno) if printout else ""
+    except GecentError:
+        text = ""  # the printout itself cannot be made: the dump alone
+    text += "\n".join(result.dump) + "\n"
+    target = listing_path or Path(input_path).with_suffix(".lis")
+    write_atomically(target, text.encode("utf-8"))
 
 
 def _layout(name: str | None) -> Layout | None:

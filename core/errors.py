@@ -92,9 +92,11 @@ class SourcePosition:
 
 
 class GecentError(Exception):
-    """Base of every error gecent reports to its user."""
+    """Base of every error gecent reports to its user. ``partial`` is what a run had
+    produced when a fatal error stopped it (the listing is still written, never the tape)."""
 
     exit_status = EXIT_INTERNAL
+    partial: object | None = None
 
 
 class InputError(GecentError):

@@ -26,7 +26,16 @@ from gecent.core.cl.records import (
 )
 from gecent.core.cl.stream import read_cl
 from gecent.core.cl.vocabulary import vocabulary
-from gecent.core.errors import Diagnostic, InputError, NotYetSupported, SourcePosition
+from gecent.core.dump import state_dump
+from gecent.core.errors import (
+    Diagnostic,
+    FatalError,
+    GecentError,
+    InputError,
+    NotYetSupported,
+    RunStopped,
+    SourcePosition,
+)
 from gecent.core.feed.rapid import RapidTraverse
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.machine.selection import (
@@ -60,6 +69,7 @@ class RunResult:
     dwell_minutes: float = 0.0
     # option 110 = +2 and a slide limit exceeded: "warn and continue with no punched output"
     punch_suppressed: bool = False
+    dump: list[str] = field(default_factory=list)  # GEDUMP, after a fatal error
 
 
 class Run:
@@ -71,6 +81,7 @@ class Run:
         self.state = PostState(machine)
         self.finished = False
         self._file = ""
+        self._record: Record | None = None
         self.units = UnitScale(machine)
         self._output: OutputElement | None = None
         self._motion: LinearMotion | None = None
@@ -148,11 +159,25 @@ class Run:
         except FormatOverflow as overflow:
             if overflow.where is not None:  # the element knows the record, the run the file
                 overflow.where = SourcePosition(self._file, None, None, overflow.where.record)
+            self._stopped_by(overflow)
             raise
+        except (FatalError, RunStopped) as error:
+            if error.where is None and self._record is not None:
+                error.where = self._record.where
+            self._stopped_by(error)
+            raise
+
+    def _stopped_by(self, error: GecentError) -> None:
+        """A fatal error: what was output so far and the GEDUMP dump go with the error, so
+        the listing can still be written (never the tape)."""
+        self.result.blocks = self.output.emitted
+        self.result.dump = state_dump(str(error), self.state, self._record)
+        error.partial = self.result
 
     def _process(self, records: Iterator[Record]) -> RunResult:
         for record in records:
             self._file = record.file
+            self._record = record
             self.result.records += 1
             if self.finished:
                 raise InputError("record after FINI", record.where)

@@ -16,7 +16,13 @@ from typing import Protocol, runtime_checkable
 
 from gecent.core.absent import ABSENT
 from gecent.core.cl.records import Statement, Word
-from gecent.core.errors import Diagnostic, InputError, NotYetSupported, SourcePosition
+from gecent.core.errors import (
+    Diagnostic,
+    FatalError,
+    InputError,
+    NotYetSupported,
+    SourcePosition,
+)
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.output.block import Block, Code
 from gecent.core.output.element import OutputElement
@@ -96,7 +102,7 @@ class SpindleElement:
         if speed is None:
             speed = spindle.speed
         if speed is None:
-            speed = machine.number_option(27)
+            speed = assumed_speed(machine, where)
             self.warn(Diagnostic("OPTION VALUE IS ASSUMED FOR THE SPINDLE SPEED", where))
         if speed < 0:
             raise InputError(f"SPINDL expects a speed >= 0, found {speed:g}", where)
@@ -163,6 +169,15 @@ class SpindleElement:
             self.warn(Diagnostic(NOT_AVAILABLE, where))
             return
         self.output.store_m(float(code))
+
+
+def assumed_speed(machine: MachineDefinition, where: SourcePosition | None) -> float:
+    """Option 27, the speed assumed when none was ever given; 0 stops processing and a
+    negative value means "error if no initial spindle speed": fatal 24 (001 L24722-24727)."""
+    speed = machine.number_option(27)
+    if speed <= 0:
+        raise FatalError(24, f"option 27 = {speed:g}", where)
+    return speed
 
 
 def _speed_and_range(statement: Statement) -> tuple[float | None, int | None]:

@@ -6,6 +6,7 @@ from typing import TYPE_CHECKING
 
 from gecent.core.cl.records import Statement, Word
 from gecent.core.errors import Diagnostic, InputError, NotYetSupported
+from gecent.core.spindle import assumed_speed
 
 _FEED_UNITS = ("IPM", "MMPM", "IPR", "MMPR")
 
@@ -46,7 +47,7 @@ def feed_per_revolution(run: Run, statement: Statement) -> None:
     speed = run.state.spindle.speed
     if speed is None:
         run.warn(Diagnostic("NO SPINDLE SPEED GIVEN FOR IPR MODE.", statement.where))
-        speed = run.state.spindle.speed = run.machine.number_option(27)
+        speed = run.state.spindle.speed = assumed_speed(run.machine, statement.where)
     set_feed(run, run.state.feed.per_revolution_value * speed, statement)
 
 
