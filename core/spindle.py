@@ -39,12 +39,24 @@ NOT_AVAILABLE = "REQUESTED MISCELLANEOUS FUNCTION CODE IS NOT AVAILABLE ON THIS 
 @dataclass(frozen=True, slots=True)
 class SpindleSelection:
     """What a spindle type makes of a requested speed: the speed the spindle will turn,
-    the S command, the range, and the manual's comments."""
+    the S command, the range, and the manual's comments. A type with range-and-direction
+    M codes gives their TABLEM cells (``direction_cells``, by CLW/CCLW); a protective shift
+    is the S command to go through first and its dwell in seconds."""
 
     speed: float
     command: float
     range: int = 1
     comments: tuple[str, ...] = field(default=())
+    direction_cells: dict[int, int] | None = None
+    shift: tuple[float, float] | None = None
+
+
+@dataclass(frozen=True, slots=True)
+class Running:
+    """The spindle as it turns before the statement: its speed and range."""
+
+    speed: float
+    range: int
 
 
 @runtime_checkable
@@ -54,8 +66,34 @@ class SpindleType(Protocol):
     section: str
 
     def select(
-        self, machine: MachineDefinition, speed: float, requested_range: int | None
+        self,
+        machine: MachineDefinition,
+        speed: float,
+        requested_range: int | None,
+        running: Running | None = None,
     ) -> SpindleSelection: ...
+
+
+LOWEST_OUTPUT = "LOWEST SPEED IN RANGE IS OUTPUT."
+NOT_FOUND = "SPINDLE SPEED COULD NOT BE FOUND."
+
+
+def lowest_range(ranges: tuple[tuple[float, ...], ...], speed: float) -> int | None:
+    """LOCRNG: the lowest range (1-based) whose speeds span ``speed`` (001 L33927-33960)."""
+    for number, speeds in enumerate(ranges, start=1):
+        if speeds and min(speeds) <= speed <= max(speeds):
+            return number
+    return None
+
+
+def limited(speed: float, low: float, high: float) -> tuple[float, tuple[str, ...]]:
+    """A speed outside the table: the nearer listed extreme, with DSRROW's comment 80 or
+    63 (001 L14588-14590, L30766-30777)."""
+    if speed < low:
+        return low, (LOWEST_OUTPUT,)
+    if speed > high:
+        return high, (NOT_FOUND,)
+    return speed, ()
 
 
 class SpindleElement:
@@ -118,29 +156,48 @@ class SpindleElement:
                 )
             direction = CLW if assumed > 0 else CCLW
         reversed_ = spindle.on and direction != spindle.direction
+        was_on = spindle.on
         if reversed_:
             self.warn(Diagnostic("WARNING--SPINDLE DIRECTION HAS CHANGED", where))
             delay = machine.number_option(89)
             if delay:
                 self._store(_OFF_CELL, where)
                 self.output.output(self.output.dwell(delay))
+                spindle.on = False  # stopped for the reversal: no protective shift after it
         if requested_range is not None and requested_range > machine.number_option(7):
             self.warn(Diagnostic("RANGE REQUESTED IS NOT AVAILABLE, USE HIGHEST", where))
             requested_range = int(machine.number_option(7))
-        if not spindle.on or reversed_:
-            self._store(_M_CELL[direction], where)
-        spindle.speed, spindle.direction, spindle.on = speed, direction, True
+        selection = None
         if self.has_s_register:
             if self.spindle_type is None:
                 raise NotYetSupported(f"spindle type {self.type_number} (option 19)", where)
-            selection = self.spindle_type.select(machine, speed, requested_range)
+            running = (
+                Running(spindle.speed, spindle.range)
+                if spindle.on and spindle.speed is not None
+                else None
+            )
+            selection = self.spindle_type.select(machine, speed, requested_range, running)
             for comment in selection.comments:
                 self.warn(Diagnostic(comment, where))
+            if selection.shift is not None:
+                # protective shifting: the shift-point speed of the present range first, with
+                # its dwell (001 L15080-15111)
+                command, seconds = selection.shift
+                self.state.pending.spindle = command
+                block = self.output.dwell(seconds)
+                block.record = statement.number
+                self.output.output(block)
+        cells = selection.direction_cells if selection and selection.direction_cells else _M_CELL
+        range_changed = selection is not None and selection.range != spindle.range
+        if not was_on or reversed_ or (cells is not _M_CELL and range_changed):
+            self._store(cells[direction], where)
+        spindle.speed, spindle.direction, spindle.on = speed, direction, True
+        if selection is not None:
             spindle.speed, spindle.range = selection.speed, selection.range
             self.state.pending.spindle = selection.command
             self.state.remember(SPINDLE_COMMAND, selection.command)
             self.state.remember(SPINDLE_RANGE, float(selection.range))
-        self.state.remember(SPINDLE_M, self._code(_M_CELL[direction]))
+        self.state.remember(SPINDLE_M, self._code(cells[direction]))
         self.output.output(Block(Code.NONMOTION, statement.number))
 
     def _off(self, statement: Statement) -> None:

@@ -15,10 +15,7 @@ from gecent.core.errors import MachineDefinitionError
 from gecent.core.feed.magic3 import magic3
 from gecent.core.hookspecs import Register, hookimpl
 from gecent.core.machine.definition import MachineDefinition
-from gecent.core.spindle import SpindleSelection
-
-LOWEST_OUTPUT = "LOWEST SPEED IN RANGE IS OUTPUT."
-NOT_FOUND = "SPINDLE SPEED COULD NOT BE FOUND."
+from gecent.core.spindle import Running, SpindleSelection, limited
 
 
 @dataclass(frozen=True)
@@ -40,14 +37,14 @@ class EiaThreeDigitSpindle:
         return speeds[0], speeds[1]
 
     def select(
-        self, machine: MachineDefinition, speed: float, requested_range: int | None
+        self,
+        machine: MachineDefinition,
+        speed: float,
+        requested_range: int | None,
+        running: Running | None = None,
     ) -> SpindleSelection:
         low, high = self.limits(machine)
-        comments: tuple[str, ...] = ()
-        if speed < low:
-            speed, comments = low, (LOWEST_OUTPUT,)
-        elif speed > high:
-            speed, comments = high, (NOT_FOUND,)
+        speed, comments = limited(speed, low, high)
         code = magic3(speed)
         assert code is not None  # the limits keep the speed within magic three's range
         return SpindleSelection(speed, float(code), 1, comments)
