@@ -16,6 +16,8 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
 
+from gecent.core.output.block import Block, Code
+
 if TYPE_CHECKING:
     from gecent.core.run import Run
 
@@ -50,7 +52,6 @@ def restat(run: Run, record: int) -> None:
     """RESTAT, at the first motion after a stop: one block for the tool, one for the spindle
     (S with its direction M), then the feed/rapid gear and coolant codes, which wait for
     the motion block. Option 145 = -2 reinstates the rapid gear only (ENTRAP did it)."""
-    from gecent.core.output.block import Block, Code
 
     state = run.state
     option = run.machine.number_option(145)

@@ -10,7 +10,6 @@ from __future__ import annotations
 from collections.abc import Iterator
 from dataclasses import dataclass, field
 
-from gecent.core.absent import ABSENT
 from gecent.core.cl.records import (
     Arelem,
     Circle,
@@ -265,17 +264,13 @@ class Run:
         position = self.state.position
         tx, ty, tz = position.translation
         for point in record.points:
+            previous = position.previous_part
+            at = (previous[0] - tx, previous[1] - ty, previous[2] - tz)
             if record.subtype is MotionSubtype.GODLTA:
                 delta = godlta_delta(point)
-                hole = tuple(position.previous_part[k] + delta[k] for k in range(3))
-                hole = (hole[0] - tx, hole[1] - ty, hole[2] - tz)
+                hole = (at[0] + delta[0], at[1] + delta[1], at[2] + delta[2])
             else:
                 hole = (point[0], point[1], point[2])
-            at = (
-                position.previous_part[0] - tx,
-                position.previous_part[1] - ty,
-                position.previous_part[2] - tz,
-            )
             if self.cycle_first_z is None:
                 self.cycle_first_z = at[2]
             for leg in cycle_legs(self.cycle, at, hole, self.cycle_first_z):
@@ -283,11 +278,9 @@ class Run:
                     block = self.output.dwell(leg.dwell)
                     block.record = record.number
                     self.output.output(block)
-                if (
-                    leg.m_code_cell is not None
-                    and self.machine.tablem[leg.m_code_cell] is not ABSENT
-                ):
-                    self.output.store_m(float(self.machine.tablem[leg.m_code_cell]))  # type: ignore[arg-type]
+                code = None if leg.m_code_cell is None else self.machine.m_code(leg.m_code_cell)
+                if code is not None:
+                    self.output.store_m(code)
                 self._leg(record, leg.point, leg.rapid)
 
     def _leg(self, record: Motion, point: tuple[float, float, float], rapid: bool) -> None:

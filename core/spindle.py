@@ -14,7 +14,6 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Protocol, runtime_checkable
 
-from gecent.core.absent import ABSENT
 from gecent.core.cl.records import Statement, Word
 from gecent.core.errors import (
     Diagnostic,
@@ -197,7 +196,7 @@ class SpindleElement:
             self.state.pending.spindle = selection.command
             self.state.remember(SPINDLE_COMMAND, selection.command)
             self.state.remember(SPINDLE_RANGE, float(selection.range))
-        self.state.remember(SPINDLE_M, self._code(cells[direction]))
+        self.state.remember(SPINDLE_M, machine.m_code(cells[direction]))
         self.output.output(Block(Code.NONMOTION, statement.number))
 
     def _off(self, statement: Statement) -> None:
@@ -216,16 +215,12 @@ class SpindleElement:
         self.state.remember(SPINDLE_M, None)
         self.output.output(Block(Code.AUX_ONLY, statement.number))
 
-    def _code(self, cell: int) -> float | None:
-        code = self.state.machine.tablem[cell]
-        return None if code is ABSENT else float(code)
-
     def _store(self, cell: int, where: SourcePosition) -> None:
-        code = self.state.machine.tablem[cell]
-        if code is ABSENT:
+        code = self.state.machine.m_code(cell)
+        if code is None:
             self.warn(Diagnostic(NOT_AVAILABLE, where))
             return
-        self.output.store_m(float(code))
+        self.output.store_m(code)
 
 
 def assumed_speed(machine: MachineDefinition, where: SourcePosition | None) -> float:

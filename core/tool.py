@@ -9,7 +9,6 @@ machines are not built yet and stop the run with an error naming them.
 
 from __future__ import annotations
 
-from gecent.core.absent import ABSENT
 from gecent.core.cl.records import Statement, Word
 from gecent.core.errors import InputError, NotYetSupported
 from gecent.core.output.element import OutputElement
@@ -42,9 +41,9 @@ class ToolElement:
         self.state.tool.number = tool
         if machine.registers.formats[13] is not None:
             self.state.remember(T_CODE, tool)
-        change = machine.tablem[7]
-        if change is not ABSENT:
-            self.output.store_m(float(change))
+        change = machine.m_code(7)
+        if change is not None:
+            self.output.store_m(change)
         if machine.registers.formats[13] is not None:
             block = self.output.dwell(machine.number_option(83))
             block.record = statement.number

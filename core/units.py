@@ -27,16 +27,11 @@ _ARELEM_LENGTHS = {4, 5, 6}  # INTOL, OUTTOL, CUTTER (001 L3544-3615)
 class UnitScale:
     """The factor from the CL file's current unit to the machine's (1.0 until UNITS)."""
 
-    __slots__ = ("cl_unit", "factor", "machine_mm")
+    __slots__ = ("factor", "machine_mm")
 
     def __init__(self, machine: MachineDefinition) -> None:
         self.machine_mm = 1.0 if machine.number_option(138) == 1 else 25.4
-        self.cl_unit = "MM" if self.machine_mm == 1.0 else "INCHES"
         self.factor = 1.0
-
-    @property
-    def machine_unit(self) -> str:
-        return "MM" if self.machine_mm == 1.0 else "INCHES"
 
     def set_units(self, statement: Statement) -> None:
         """UNITS/MM|CM|INCHES|FEET: later lengths are in that unit."""
@@ -47,8 +42,7 @@ class UnitScale:
                 f"{', '.join(str(a) for a in statement.args) or 'nothing'}",
                 statement.where,
             )
-        self.cl_unit = words[0]
-        self.factor = MILLIMETRES[self.cl_unit] / self.machine_mm
+        self.factor = MILLIMETRES[words[0]] / self.machine_mm
 
     def length(self, value: float) -> float:
         return value * self.factor

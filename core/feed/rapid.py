@@ -12,7 +12,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
-from gecent.core.absent import ABSENT
+from gecent.core.machine.definition import MachineDefinition
 from gecent.core.output.block import Block
 from gecent.core.reinstate import FEED_M
 from gecent.core.state import PostState
@@ -47,8 +47,8 @@ class RapidTraverse:
         self.into_dwell = machine.number_option(81)
         self.back_dwell = machine.number_option(82)
         axes = (0,) if self.shifting < 0 else (0, 1, 2)
-        self.into_codes = _codes(machine.tablem, _INTO_RAPID, axes)
-        self.back_codes = _codes(machine.tablem, _BACK_TO_FEED, axes)
+        self.into_codes = _codes(machine, _INTO_RAPID, axes)
+        self.back_codes = _codes(machine, _BACK_TO_FEED, axes)
 
     @property
     def modal(self) -> bool:
@@ -132,6 +132,7 @@ class RapidTraverse:
 
 
 def _codes(
-    tablem: tuple[object, ...], cells: tuple[int, ...], axes: tuple[int, ...]
+    machine: MachineDefinition, cells: tuple[int, ...], axes: tuple[int, ...]
 ) -> tuple[float, ...]:
-    return tuple(float(tablem[cells[a]]) for a in axes if tablem[cells[a]] is not ABSENT)  # type: ignore[arg-type]
+    codes = (machine.m_code(cells[axis]) for axis in axes)
+    return tuple(code for code in codes if code is not None)

@@ -98,6 +98,16 @@ class MachineDefinition:
             options[number] = value
         return replace(self, options=tuple(options))
 
+    def g_code(self, location: int) -> float | None:
+        """TABLEG(location) as a number; None where the machine has no such code (DMBITS)."""
+        value = self.tableg[location]
+        return None if value is ABSENT else float(value)
+
+    def m_code(self, location: int) -> float | None:
+        """TABLEM(location) as a number; None where the machine has no such code (DMBITS)."""
+        value = self.tablem[location]
+        return None if value is ABSENT else float(value)
+
     def describe_code(self, table: str, location: int) -> str:
         value = (self.tableg if table == "tableg" else self.tablem)[location]
         return "absent" if value is ABSENT else f"{table[-1].upper()}{value:02d}"

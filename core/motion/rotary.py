@@ -25,7 +25,7 @@ from gecent.core.state import PostState
 
 CLW, CCLW = 1, -1
 HEAD_CELL, TABLE_CELL = 6, 7  # DBFSEG(6) head, DBFSEG(7) table (001 L5600-5606)
-_UNITS_PER_DEGREE = {0.0: 1 / 360, 1.0: 1.0, -1.0: 100 / 360}  # option 118
+UNITS_PER_DEGREE = {0.0: 1 / 360, 1.0: 1.0, -1.0: 100 / 360}  # option 118
 
 
 def normalise(angle: float) -> float:
@@ -111,9 +111,9 @@ class RotaryElement:
         self.emit = emit
         self.warn = warn
         scaling = machine.number_option(118)
-        if scaling not in _UNITS_PER_DEGREE:
+        if scaling not in UNITS_PER_DEGREE:
             raise NotYetSupported(f"rotary scaling option 118 = {scaling:g}")
-        self.per_degree = _UNITS_PER_DEGREE[scaling]
+        self.per_degree = UNITS_PER_DEGREE[scaling]
         self.step = machine.number_option(119)
         self.maximum = machine.number_option(111) * self.per_degree
         self.clw_increases = machine.number_option(117) >= 0

@@ -17,6 +17,7 @@ from gecent.core.feed.contour import FeedCommand, RapidCommand
 from gecent.core.feed.optimise import FeedOptimiser
 from gecent.core.motion.gcode import CircularCodes, DimensionCode, LinearCodes, RotaryCodes
 from gecent.core.motion.limits import SlideLimits
+from gecent.core.motion.rotary import UNITS_PER_DEGREE
 from gecent.core.output.block import Block, Code
 from gecent.core.output.marks import stand_in
 from gecent.core.output.words import WordFormatter
@@ -55,21 +56,18 @@ class OutputElement:
         self.words = WordFormatter(machine)
         self.optimiser = FeedOptimiser(machine, self.linear_codes, self.feed, self.words.shuffle)
         self.slide_limits = SlideLimits(machine, self.words.shuffle)
+        dwell_g = machine.g_code(5)
+        self.dwell_g: float | Absent = ABSENT if dwell_g is None else dwell_g
         # the F-register dwell's G: TABLEG(5), else the smallest code from G11 (GDIMUL 1) up
-        dwell_g = machine.tableg[5]
         self.dwell_code = (
             DimensionCode(int(dwell_g), 5, 1.0)
-            if dwell_g is not ABSENT
+            if dwell_g is not None
             else next((c for c in self.linear_codes.codes[1:] if c is not None), None)
         )
-        per_degree = {0.0: 1 / 360, 1.0: 1.0, -1.0: 100 / 360}.get(machine.number_option(118), 1.0)
+        per_degree = UNITS_PER_DEGREE.get(machine.number_option(118), 1.0)
         self.rotary_codes = RotaryCodes(machine, machine.number_option(111) * per_degree)
-        dwell_g = machine.tableg[5]
-        self.fill_g: float | Absent = (
-            float(dwell_g)
-            if machine.number_option(38) in (1.0, -1.0) and dwell_g is not ABSENT
-            else ABSENT
-        )
+        # option 38 = +-1: blocks without a G get TABLEG(5) (001 L24890-24907)
+        self.fill_g = self.dwell_g if machine.number_option(38) in (1.0, -1.0) else ABSENT
         self.tmark_code = stand_in(machine, 65)
         n_format = machine.registers.formats[1]
         # SEQLIM: the largest N the format holds (999 for format 30)
@@ -168,8 +166,7 @@ class OutputElement:
             block.cells[11] = 60.0 * multiplier / seconds if seconds else ABSENT
             self.words.previous_f = ABSENT  # the F dwell overwrote the control's feed
             return
-        dwell_g = machine.tableg[5]
-        block.cells[2] = ABSENT if dwell_g is ABSENT else float(dwell_g)
+        block.cells[2] = self.dwell_g
         block.cells[register] = seconds / (machine.number_option(56) or 1.0)
 
     def _non_motion_dwell(self, block: Block) -> None:
@@ -183,8 +180,8 @@ class OutputElement:
             if block.cells[11] is ABSENT:
                 block.cells[11] = abs(momentary)
                 self.words.previous_f = ABSENT
-            if block.cells[2] is ABSENT and machine.tableg[5] is not ABSENT:
-                block.cells[2] = float(machine.tableg[5])
+            if block.cells[2] is ABSENT:
+                block.cells[2] = self.dwell_g
             return
         seconds = machine.number_option(148)
         if block.code is Code.DWELL or not seconds or (seconds < 0 and not block.stop):
@@ -225,10 +222,7 @@ class OutputElement:
             block.cut_minutes = sum(d * d for d in departures) ** 0.5 / ipm
             self.cut_minutes += block.cut_minutes
             return
-        if feed.programmed is None and not self._assumed_feed:
-            self._assumed_feed = True
-            self.diagnostics.append(Diagnostic("OPTION FEEDRATE ASSUMED."))
-            feed.ipm = self.state.machine.number_option(23)
+        self._check_feed()
         multiplied = (
             self.optimiser.multiplied(block, feed.ipm, code.gdimul, length, code.size_class)
             if self.optimiser.multiplying and block.code is Code.LINEAR
@@ -251,6 +245,15 @@ class OutputElement:
             block.cut_minutes = length / ipm
         self.cut_minutes += block.cut_minutes
 
+    def _check_feed(self) -> None:
+        """No FEDRAT before the first cut: option 23, once, with the manual's comment
+        (001 L34083, L24674-24679)."""
+        feed = self.state.feed
+        if feed.programmed is None and not self._assumed_feed:
+            self._assumed_feed = True
+            self.diagnostics.append(Diagnostic("OPTION FEEDRATE ASSUMED."))
+            feed.ipm = self.state.machine.number_option(23)
+
     def _rotary(self, block: Block) -> None:
         """An incremental rotary block: SELGRO's G code, and the feed over the arc the part
         radius (option 112) sweeps, held to the table's feed range (options 113, 114 in
@@ -264,12 +267,8 @@ class OutputElement:
         length = radians(degrees) * radius
         per_rpm = 2 * pi * radius
         low, high = machine.number_option(113) * per_rpm, machine.number_option(114) * per_rpm
-        feed = self.state.feed
-        if feed.programmed is None and not self._assumed_feed:
-            self._assumed_feed = True
-            self.diagnostics.append(Diagnostic("OPTION FEEDRATE ASSUMED."))
-            feed.ipm = machine.number_option(23)
-        ipm = min(max(feed.ipm, low), high)
+        self._check_feed()
+        ipm = min(max(self.state.feed.ipm, low), high)
         command, ipm, f_format = self.feed.command(ipm, code.gdimul, length, code.size_class)
         block.cells[11] = command
         block.cells[19] = ipm

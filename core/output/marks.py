@@ -11,7 +11,6 @@ from __future__ import annotations
 
 from math import floor
 
-from gecent.core.absent import ABSENT
 from gecent.core.errors import InputError, SourcePosition
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.output.block import Block, Code
@@ -52,7 +51,8 @@ def tmark_cells(machine: MachineDefinition, block: Block) -> None:
     if feed:
         block.cells[11] = feed
     contents = machine.number_option(146)
-    if contents in (1.0, -1.0) and machine.tableg[5] is not ABSENT:
-        block.cells[2] = float(machine.tableg[5])
+    dwell_g = machine.g_code(5)
+    if contents in (1.0, -1.0) and dwell_g is not None:
+        block.cells[2] = dwell_g
     if contents == -1.0:
         block.cells[12] = machine.number_option(99)

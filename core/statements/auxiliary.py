@@ -12,7 +12,6 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
-from gecent.core.absent import ABSENT
 from gecent.core.cl.records import Statement
 from gecent.core.errors import Diagnostic, InputError
 from gecent.core.output.block import Block, Code
@@ -34,11 +33,6 @@ CLAMP_CELLS = {"XAXIS": (22, 23), "TABLE": (22, 23), "PART": (22, 23), "YAXIS": 
 FILLER_FRAMES = 72  # one card of the tape image
 
 
-def _m_code(run: Run, cell: int) -> float | None:
-    code = run.machine.tablem[cell]
-    return None if code is ABSENT else float(code)
-
-
 def coolnt(run: Run, statement: Statement) -> None:
     """COOLNT/ON|OFF[,FLOOD|MIST|TAPKUL|SADDLE|FRONT|REAR]: the M code waits for the next
     block. A mode the machine has no code for falls back to TABLEM(9)/(10)."""
@@ -55,9 +49,9 @@ def coolnt(run: Run, statement: Statement) -> None:
     mode = modes.coolant_mode or int(run.machine.number_option(33)) or 4
     on = "OFF" not in words
     cells = COOLANT_CELLS.get(mode, COOLANT_CELLS[4])
-    code = _m_code(run, cells[0 if on else 1])
+    code = run.machine.m_code(cells[0 if on else 1])
     if code is None:
-        code = _m_code(run, COOLANT_CELLS[4][0 if on else 1])
+        code = run.machine.m_code(COOLANT_CELLS[4][0 if on else 1])
     modes.coolant_on = on
     run.state.remember(COOLANT, code if on else None)
     if code is not None:
@@ -69,15 +63,7 @@ def _stop(run: Run, statement: Statement, cell: int) -> None:
     stops spindle and coolant, so both are off afterwards (001 L37970-37991)."""
     if statement.args:
         raise InputError(f"{statement.major} takes no arguments", statement.where)
-    code = _m_code(run, cell)
-    output = run.output
-    if code is None:
-        run.warn(Diagnostic(NOT_AVAILABLE, statement.where))
-    else:
-        output.store_m(code)
-        block = Block(Code.AUX_ONLY, statement.number)
-        block.stop = True
-        output.output(block)
+    _code_by_itself(run, statement, cell, stop=True)
     _spindle_and_coolant_off(run)
     run.state.modes.stopped = True
     run.state.conditions.respecified.clear()
@@ -96,9 +82,25 @@ def opstop(run: Run, statement: Statement) -> None:
 def break_(run: Run, statement: Statement) -> None:
     """BREAK: an optional-stop block when the machine has one (TABLEM(2); the manual's
     TABLEG(2) is a slip), then the tape may be broken there (001 L9273-9281)."""
-    if _m_code(run, 2) is None:
+    if run.machine.m_code(2) is None:
         return
     _stop(run, statement, 2)
+
+
+def _code_by_itself(
+    run: Run, statement: Statement, cell: int, kind: Code = Code.AUX_ONLY, stop: bool = False
+) -> bool:
+    """TABLEM(cell) in a block by itself, after any waiting M; comment 22 (and False) when
+    the machine has no such code."""
+    code = run.machine.m_code(cell)
+    if code is None:
+        run.warn(Diagnostic(NOT_AVAILABLE, statement.where))
+        return False
+    run.output.store_m(code)
+    block = Block(kind, statement.number)
+    block.stop = stop
+    run.output.output(block)
+    return True
 
 
 def _spindle_and_coolant_off(run: Run) -> None:
@@ -126,15 +128,9 @@ def end(run: Run, statement: Statement) -> None:
     next motion must start with a FROM (001 L30909-30951, L26320-26327, L24496-24510)."""
     if statement.args:
         raise InputError("END takes no arguments", statement.where)
-    output = run.output
-    output.flush_m(statement.number)
+    run.output.flush_m(statement.number)
     _dwell_with_t0(run, statement)
-    code = _m_code(run, 3)
-    if code is None:
-        run.warn(Diagnostic(NOT_AVAILABLE, statement.where))
-    else:
-        output.store_m(code)
-        output.output(Block(Code.END, statement.number))
+    _code_by_itself(run, statement, 3, Code.END)
     machine = run.machine
     leader = machine.number_option(168)
     if leader > 0:
@@ -157,16 +153,10 @@ def end(run: Run, statement: Statement) -> None:
 def rewind(run: Run, statement: Statement) -> None:
     """REWIND: the option-97 dwell with T0, then the rewind code TABLEM(31) in a block by
     itself; spindle and coolant are off (001 L35796-35848; DWELL(92) read as DWELL(97))."""
-    output = run.output
-    output.flush_m(statement.number)
+    run.output.flush_m(statement.number)
     _dwell_with_t0(run, statement)
-    code = _m_code(run, 31)
-    if code is None:
-        run.warn(Diagnostic(NOT_AVAILABLE, statement.where))
-        return
-    output.store_m(code)
-    output.output(Block(Code.AUX_ONLY, statement.number))
-    _spindle_and_coolant_off(run)
+    if _code_by_itself(run, statement, 31):
+        _spindle_and_coolant_off(run)
 
 
 def auxfun(run: Run, statement: Statement) -> None:
@@ -198,7 +188,7 @@ def clamp(run: Run, statement: Statement) -> None:
             "CLAMP expects an object (XAXIS, TABLE, ...) and ON or OFF", statement.where
         )
     cells = CLAMP_CELLS[objects[0] if objects else "XAXIS"]
-    code = _m_code(run, cells[1] if switches == ["OFF"] else cells[0])
+    code = run.machine.m_code(cells[1] if switches == ["OFF"] else cells[0])
     if code is None:
         run.warn(Diagnostic(NOT_AVAILABLE, statement.where))
         return

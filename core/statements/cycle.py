@@ -8,11 +8,10 @@ from __future__ import annotations
 from dataclasses import replace
 from typing import TYPE_CHECKING
 
-from gecent.core.absent import ABSENT
 from gecent.core.cl.records import Statement
 from gecent.core.errors import NotYetSupported
 from gecent.core.motion.cycles import CYCLE_TYPES, parse_cycle
-from gecent.core.statements.feed import feed_per_revolution, set_feed
+from gecent.core.statements.feed import program_feed
 
 if TYPE_CHECKING:
     from gecent.core.run import Run
@@ -29,7 +28,7 @@ def cycle(run: Run, statement: Statement) -> None:
         return
     machine = run.machine
     cell = CYCLE_TYPES[parsed.kind][1]
-    if machine.number_option(1) != 0 or machine.tableg[cell] is not ABSENT:
+    if machine.number_option(1) != 0 or machine.g_code(cell) is not None:
         raise NotYetSupported(
             f"CYCLE/{parsed.kind} by the control's own cycle (TABLEG({cell}), option 1)",
             statement.where,
@@ -46,13 +45,7 @@ def cycle(run: Run, statement: Statement) -> None:
     run.cycle_first_z = None
     if parsed.feed is not None:
         value, unit = parsed.feed
-        per_minute = units.per_minute(value, unit)
-        feed.per_revolution = unit is not None and unit.name in ("IPR", "MMPR")
-        if feed.per_revolution:
-            feed.per_revolution_value = per_minute
-            feed_per_revolution(run, statement)
-        else:
-            set_feed(run, per_minute, statement)
+        program_feed(run, units.per_minute(value, unit), unit, statement)
 
 
 HANDLERS = {"CYCLE": cycle}

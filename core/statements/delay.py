@@ -11,7 +11,6 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
-from gecent.core.absent import ABSENT
 from gecent.core.cl.records import Statement
 from gecent.core.errors import Diagnostic, InputError
 from gecent.core.output.block import Block, Code
@@ -43,12 +42,12 @@ def delay(run: Run, statement: Statement) -> None:
     if seconds == 0:
         output.output(Block(Code.AUX_ONLY, statement.number))
         return
-    if machine.tableg[5] is ABSENT and machine.number_option(57) != 11:
-        preset = machine.tablem[18]
-        if preset is ABSENT:
+    if machine.g_code(5) is None and machine.number_option(57) != 11:
+        preset = machine.m_code(18)
+        if preset is None:
             run.warn(Diagnostic(NO_PRESET, statement.where))
             return
-        output.store_m(float(preset))
+        output.store_m(preset)
         output.output(Block(Code.AUX_ONLY, statement.number))
         return
     block = output.dwell(seconds)

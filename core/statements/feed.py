@@ -32,29 +32,39 @@ def fedrat(run: Run, statement: Statement) -> None:
     value = run.units.per_minute(numbers[0], unit)
     if value <= 0:
         raise InputError(f"FEDRAT needs a positive feedrate, found {numbers[0]:g}", statement.where)
+    program_feed(run, value, unit, statement, from_fedrat=True)
+
+
+def program_feed(
+    run: Run, value: float, unit: Word | None, statement: Statement, *, from_fedrat: bool = False
+) -> None:
+    """A programmed feed in machine units (FEDRAT's, or a cycle's): per minute or per
+    revolution as its unit word says, or in the last mode without one."""
     feed = run.state.feed
     if unit is not None:
         feed.per_revolution = unit.name in ("IPR", "MMPR")
     if feed.per_revolution:
         feed.per_revolution_value = value
-        feed_per_revolution(run, statement)
+        feed_per_revolution(run, statement, from_fedrat=from_fedrat)
     else:
-        set_feed(run, value, statement)
+        set_feed(run, value, statement, from_fedrat=from_fedrat)
 
 
-def feed_per_revolution(run: Run, statement: Statement) -> None:
+def feed_per_revolution(run: Run, statement: Statement, *, from_fedrat: bool = False) -> None:
     """FEDIPM = FEDIPR x the spindle speed, again at every speed change."""
     speed = run.state.spindle.speed
     if speed is None:
         run.warn(Diagnostic("NO SPINDLE SPEED GIVEN FOR IPR MODE.", statement.where))
         speed = run.state.spindle.speed = assumed_speed(run.machine, statement.where)
-    set_feed(run, run.state.feed.per_revolution_value * speed, statement)
+    set_feed(run, run.state.feed.per_revolution_value * speed, statement, from_fedrat=from_fedrat)
 
 
-def set_feed(run: Run, feed: float, statement: Statement) -> None:
+def set_feed(run: Run, feed: float, statement: Statement, *, from_fedrat: bool = False) -> None:
+    """FEDIPM within options 48 and 25; only a FEDRAT can ask for rapid by its feed
+    (option 109 = +1/+2)."""
     low, high = run.machine.number_option(48), run.machine.number_option(25)
     used = min(max(feed, low), high)
-    if statement.major == "FEDRAT" and run.rapid.feedrate(feed, high):
+    if from_fedrat and run.rapid.feedrate(feed, high):
         pass  # option 109 = +1/+2: the feed above the range is a rapid request
     elif used != feed:
         per_minute = "MMPM" if run.units.machine_mm == 1.0 else "IPM"
