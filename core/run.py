@@ -45,6 +45,7 @@ from gecent.core.motion.circle import CircularMotion
 from gecent.core.motion.cycles import Cycle, cycle_legs
 from gecent.core.motion.linear import LinearMotion, godlta_delta
 from gecent.core.motion.rotary import RotaryElement
+from gecent.core.motion.thread import ThreadElement
 from gecent.core.output.block import Block, Code
 from gecent.core.output.element import OutputElement
 from gecent.core.output.format import FormatOverflow
@@ -53,6 +54,7 @@ from gecent.core.reinstate import restat
 from gecent.core.spindle import SpindleElement
 from gecent.core.state import PostState
 from gecent.core.statements import handlers
+from gecent.core.statements.threading import RAPID_THREAD
 from gecent.core.tool import ToolElement
 from gecent.core.units import UnitScale
 
@@ -89,6 +91,7 @@ class Run:
         self._spindle: SpindleElement | None = None
         self._tool_element: ToolElement | None = None
         self._rotary: RotaryElement | None = None
+        self._thread: ThreadElement | None = None
         self.cycle: Cycle | None = None  # the canned cycle in force (CYCFLG, ICYTYP)
         self.cycle_first_z: float | None = None
         self._statements = handlers()
@@ -133,6 +136,14 @@ class Run:
                 self.state, self.output, lambda n: plugins.get("spindles", n), self.warn
             )
         return self._spindle
+
+    @property
+    def thread(self) -> ThreadElement:
+        if self._thread is None:
+            self._thread = ThreadElement(
+                self.state, self.output.output, self.motion, self.warn, self.units.machine_mm
+            )
+        return self._thread
 
     @property
     def tool(self) -> ToolElement:
@@ -248,6 +259,13 @@ class Run:
             restat(self, record.number)
         if self.cycle is not None and record.subtype is not MotionSubtype.FROM:
             self._cycle_points(record)
+            return
+        if self.state.threading.armed and record.subtype is not MotionSubtype.FROM:
+            feed = self.state.feed
+            if feed.rapid_requested or feed.rapid_mode:
+                self.warn(Diagnostic(RAPID_THREAD, record.where))
+                feed.rapid_requested = False
+            self.thread.record(record)
             return
         if record.subtype is not MotionSubtype.FROM:
             feed = self.state.feed

@@ -75,6 +75,7 @@ class SpindleType(Protocol):
 
 LOWEST_OUTPUT = "LOWEST SPEED IN RANGE IS OUTPUT."
 NOT_FOUND = "SPINDLE SPEED COULD NOT BE FOUND."
+TOO_FAST_FOR_THREADING = "SPINDLE SPEED IS TOO HIGH FOR THREADING"
 
 
 def lowest_range(ranges: tuple[tuple[float, ...], ...], speed: float) -> int | None:
@@ -124,18 +125,25 @@ class SpindleElement:
             self._off(statement)
             return
         speed, requested_range = _speed_and_range(statement)
-        self._on(statement, speed, requested_range, words)
+        self._on(statement.where, statement.number, speed, requested_range, words)
+
+    def change_speed(
+        self, speed: float, where: SourcePosition, record: int, in_range: int | None = None
+    ) -> None:
+        """A speed change the postprocessor makes itself (COUPLE's drop to the lowest
+        speed of the range and the return to speed), as SPINDL/speed[,RANGE,r] would."""
+        self._on(where, record, speed, in_range, [])
 
     def _on(
         self,
-        statement: Statement,
+        where: SourcePosition,
+        record: int,
         speed: float | None,
         requested_range: int | None,
         words: list[str],
     ) -> None:
         machine = self.state.machine
         spindle = self.state.spindle
-        where = statement.where
         if speed is None:
             speed = spindle.speed
         if speed is None:
@@ -184,7 +192,7 @@ class SpindleElement:
                 command, seconds = selection.shift
                 self.state.pending.spindle = command
                 block = self.output.dwell(seconds)
-                block.record = statement.number
+                block.record = record
                 self.output.output(block)
         cells = selection.direction_cells if selection and selection.direction_cells else _M_CELL
         range_changed = selection is not None and selection.range != spindle.range
@@ -197,7 +205,9 @@ class SpindleElement:
             self.state.remember(SPINDLE_COMMAND, selection.command)
             self.state.remember(SPINDLE_RANGE, float(selection.range))
         self.state.remember(SPINDLE_M, machine.m_code(cells[direction]))
-        self.output.output(Block(Code.NONMOTION, statement.number))
+        if self.state.threading.coupled and spindle.speed > machine.number_option(175):
+            self.warn(Diagnostic(TOO_FAST_FOR_THREADING, where))
+        self.output.output(Block(Code.NONMOTION, record))
 
     def _off(self, statement: Statement) -> None:
         machine = self.state.machine

@@ -88,6 +88,21 @@ class Modes:
 
 
 @dataclass(slots=True)
+class Threading:
+    """PITCH's THLEAD, THMODE and THRATE (with the final lead and the thread length they
+    come from), THREAD's THFLAG and ITHTYP, and ENCODE (the encoder is coupled)
+    (001 L15941-15951, L34612-34686, L38323-38356)."""
+
+    lead: float | None = None  # THLEAD, in machine units per revolution
+    mode: int = 0  # THMODE: +1 increasing lead, 0 constant, -1 decreasing
+    final_lead: float | None = None
+    length: float | None = None  # the screw length THRATE is taken over (None: the path's)
+    armed: bool = False  # THFLAG: the next motion record is a thread (one-shot)
+    facing: bool = False  # ITHTYP = 2 (FACE); 1 (TURN) otherwise
+    coupled: bool = False  # ENCODE
+
+
+@dataclass(slots=True)
 class Numbering:
     """SEQNO: ``series`` gives the next N and the increment; ``off`` drops N words."""
 
@@ -106,6 +121,7 @@ class PostState:
     tolerances: Tolerances = field(default_factory=Tolerances)
     modes: Modes = field(default_factory=Modes)
     numbering: Numbering = field(default_factory=Numbering)
+    threading: Threading = field(default_factory=Threading)
     conditions: StateVector = field(default_factory=StateVector)  # STATE(12), option 145
     sequence: int = 0  # SEQCTR: the CL record number of the record being processed
     skipping: bool = False  # SKPFLG (OPSKIP)

@@ -34,6 +34,7 @@ CIRCLE_CODES = frozenset(
     }
 )
 MOTION_CODES = frozenset({Code.LINEAR}) | CIRCLE_CODES
+THREAD_CODES = frozenset({Code.THREAD_5, Code.THREAD_6})
 # blocks whose cells 3..10 are registers already, not internal axes for SHUFFL
 UNSHUFFLED = frozenset({Code.DWELL})
 # numeric blocks that get TABLEG(5) when they have no G and option 38 = +-1 (001 L24890-24907)
@@ -102,6 +103,8 @@ class OutputElement:
             self._motion(block)
         elif block.code is Code.ROTARY_INCREMENTAL:
             self._rotary(block)
+        elif block.code in THREAD_CODES:
+            self._thread(block)
         else:
             if block.code in NON_MOTION_DWELL or block.code is Code.DWELL:
                 self._non_motion_dwell(block)
@@ -244,6 +247,15 @@ class OutputElement:
         else:
             block.cut_minutes = length / ipm
         self.cut_minutes += block.cut_minutes
+
+    def _thread(self, block: Block) -> None:
+        """A thread block comes finished from THREDO: no CONTUR, the lead and G are set;
+        the F register the control may have held is overwritten by a threading rate."""
+        if self.slide_limits.limits:
+            assert block.position is not None
+            self.diagnostics.extend(self.slide_limits.test(block.position))
+        self.cut_minutes += block.cut_minutes
+        self.words.previous_f = ABSENT
 
     def _check_feed(self) -> None:
         """No FEDRAT before the first cut: option 23, once, with the manual's comment

@@ -27,10 +27,22 @@ def handlers() -> dict[str, Handler]:
         spindle_tool,
         tape,
         text,
+        threading,
     )
 
     table: dict[str, Handler] = {}
-    modules = (text, machine, feed, tape, spindle_tool, delay, auxiliary, coordinates, cycle)
+    modules = (
+        text,
+        machine,
+        feed,
+        tape,
+        spindle_tool,
+        delay,
+        auxiliary,
+        coordinates,
+        cycle,
+        threading,
+    )
     for module in modules:
         table.update(module.HANDLERS)
     return table

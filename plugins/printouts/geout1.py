@@ -18,7 +18,7 @@ from gecent.core.listing import environment
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.machine.shuffle import cell_map
 from gecent.core.output.block import TEXT_CODES, Block, Code
-from gecent.core.output.element import MOTION_CODES
+from gecent.core.output.element import MOTION_CODES, THREAD_CODES
 from gecent.core.output.format import NO_DECIMAL_POINT
 from gecent.core.output.marks import stand_in
 from gecent.core.output.tape import tape_feet, tape_lines
@@ -120,16 +120,20 @@ def _absolute(value: float, decimals: int) -> str:
 
 
 # the numeric blocks GEOUT1 lays out in columns (text blocks print their text)
-PRINTABLE = MOTION_CODES | {
-    Code.FROM,
-    Code.ROTARY_INCREMENTAL,
-    Code.NONMOTION,
-    Code.AUX_ONLY,
-    Code.DWELL,
-    Code.G_ONLY,
-    Code.END,
-    Code.TMARK,
-}
+PRINTABLE = (
+    MOTION_CODES
+    | THREAD_CODES
+    | {
+        Code.FROM,
+        Code.ROTARY_INCREMENTAL,
+        Code.NONMOTION,
+        Code.AUX_ONLY,
+        Code.DWELL,
+        Code.G_ONLY,
+        Code.END,
+        Code.TMARK,
+    }
+)
 
 
 @dataclass(frozen=True)

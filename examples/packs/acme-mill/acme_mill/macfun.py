@@ -8,7 +8,7 @@ TOOL_CHANGE_POSITION = (0.0, 0.0, 10.0)
 
 def check_from_point(context):
     point = tuple(context.point[:3])
-    if any(abs(a - b) > 1e-4 for a, b in zip(point, TOOL_CHANGE_POSITION)):
+    if any(abs(a - b) > 1e-4 for a, b in zip(point, TOOL_CHANGE_POSITION, strict=True)):
         context.warn("FROM POINT IS NOT THE TOOL CHANGE POSITION 0,0,10")
     return HookResult.CONTINUE
 
