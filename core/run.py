@@ -148,7 +148,7 @@ class Run:
     @property
     def tool(self) -> ToolElement:
         if self._tool_element is None:
-            self._tool_element = ToolElement(self.state, self.output)
+            self._tool_element = ToolElement(self.state, self.output, self.warn)
         return self._tool_element
 
     def warn(self, diagnostic: Diagnostic) -> None:

@@ -1,51 +1,202 @@
-"""Loading a tool: TOOLNO/n and APT IV's LOADTL/n on a contouring mill (manual TOOLNO
-001 L38733-38799 and TOOLGM L38605-38646, read in docs/research/spindle-tool.md).
+"""Loading a tool on a contouring machine: TOOLNO/n (APT IV's LOADTL/n) and TURRET
+(manual TOOLNO 001 L38733-38799, TOOLGM L38605-38646, TOOLL L38694-38731, TURRET
+L39054-39091, COMTAT L29715-29760, MINMOV L34013-34055, option 96 L25520-25569), read in
+docs/research/spindle-tool.md and docs/research/lathe-tools.md.
 
-The tool-change M code TABLEM(7) waits for the next block (STOREM). A machine with a T
-register gets a dwell block of option 83 seconds carrying the T word; one without (MACH23)
-records the tool and outputs nothing. Tool length changes, offsets, lathes and positioning
-machines are not built yet and stop the run with an error naming them.
+* The tool-change M code TABLEM(7) waits for the next block (STOREM); a rotating magazine
+  or turret turns CLW (TABLEM 83) or CCLW (84), as programmed or the shorter way (MINMOV,
+  option 88 negative).
+* A machine with a T register gets a dwell block of option 83 seconds carrying the T word;
+  one without (MACH23) records the tool and outputs nothing.
+* TOOLNO/n, OFSETL, k makes T = n followed by the two offset digits (n x 100 + k).
+* TURRET/t[, p][, OFSETL, k][, FRONT|REAR][, CLW|CCLW] packs tool t, turret position p
+  (default t) and offset k into T by option 96's layout (COMTAT); FRONT and REAR select the
+  turret (TABLEM 29, 30), the index itself is TABLEM(8).
+
+Tool-length corrections (LENGTH, ADJUST), turret corrective moves (NOW, NEXT) and
+positioning machines are not built and stop the run with an error naming them.
 """
 
 from __future__ import annotations
 
+from collections.abc import Callable
+
 from gecent.core.cl.records import Statement, Word
-from gecent.core.errors import InputError, NotYetSupported
+from gecent.core.errors import Diagnostic, InputError, NotYetSupported, SourcePosition
 from gecent.core.output.element import OutputElement
 from gecent.core.reinstate import T_CODE
 from gecent.core.state import PostState
 
+TOOL_CHANGE, TURRET_INDEX, FRONT_TURRET, REAR_TURRET = 7, 8, 29, 30
+TURN_CLW, TURN_CCLW = 83, 84
+_DIRECTIONS = {"CLW": TURN_CLW, "CCLW": TURN_CCLW}
+_TURRETS = {"FRONT": FRONT_TURRET, "REAR": REAR_TURRET}
+NOT_AVAILABLE = "REQUESTED MISCELLANEOUS FUNCTION CODE IS NOT AVAILABLE ON THIS MACHINE"
+
+# option 96: the T word's fields, first digit first, with their digit counts (001
+# L25532-25560). The OCR damaged the type column; 0 and 3-6 are legible, 2 is the sample
+# lathe's five-digit layout (MACH04: option 96 = 2, T format 50); 1 and 7 are not built.
+T_LAYOUTS: dict[int, tuple[tuple[str, int], ...]] = {
+    0: (("tool", 0),),
+    2: (("offset", 2), ("tool", 2), ("position", 1)),
+    3: (("tool", 1), ("position", 1)),
+    4: (("tool", 1), ("offset", 1)),
+    5: (("offset", 1), ("tool", 1)),
+    6: (("offset", 1), ("tool", 1), ("position", 1)),
+}
+
 
 class ToolElement:
-    def __init__(self, state: PostState, output: OutputElement) -> None:
+    def __init__(
+        self, state: PostState, output: OutputElement, warn: Callable[[Diagnostic], None]
+    ) -> None:
         self.state = state
         self.output = output
+        self.warn = warn
+        self.position: int | None = None  # FFRSTL: where the magazine or turret stands
 
     def statement(self, statement: Statement) -> None:
+        """TOOLNO/n[, OFSETL, k][, CLW|CCLW]."""
+        tool, words, offset = self._parse(statement, allowed=("OFSETL", "CLW", "CCLW"))
+        t_code = tool if offset is None else tool * 100 + offset
+        self._load(statement, tool, t_code, words, index_cell=None)
+
+    def turret(self, statement: Statement) -> None:
+        """TURRET/t[, p][, OFSETL, k][, FRONT|REAR][, CLW|CCLW]: COMTAT's T word."""
+        allowed = ("OFSETL", "CLW", "CCLW", "FRONT", "REAR")
+        tool, words, offset = self._parse(statement, allowed=allowed, positions=2)
+        numbers = _plain_numbers(statement)
+        position = numbers[1] if len(numbers) > 1 else tool
+        t_code = self._comtat(tool, position, offset or 0, statement.where)
+        for word in words:
+            if word in _TURRETS:
+                self._store(_TURRETS[word], statement.where)
+        self._load(statement, position, t_code, words, index_cell=TURRET_INDEX)
+
+    def _parse(
+        self, statement: Statement, allowed: tuple[str, ...], positions: int = 1
+    ) -> tuple[int, list[str], int | None]:
         machine = self.state.machine
+        where = statement.where
         words = [a.name for a in statement.args if isinstance(a, Word)]
-        if words:
-            raise NotYetSupported(f"{statement.major}/{words[0]}", statement.where)
-        numbers = statement.numbers()
-        if len(numbers) != 1 or numbers[0] < 0 or numbers[0] != int(numbers[0]):
-            raise InputError(
-                f"{statement.major} expects one tool number, a whole number >= 0", statement.where
-            )
+        for word in words:
+            if word in ("LENGTH", "ADJUST", "NOW", "NEXT"):
+                raise NotYetSupported(f"{statement.major}/{word}", where)
+            if word not in allowed:
+                raise InputError(
+                    f"{statement.major} does not take {word}; expected {', '.join(allowed)}",
+                    where,
+                )
+        if "CLW" in words and "CCLW" in words:
+            raise InputError(f"{statement.major} takes one of CLW and CCLW", where)
         if machine.number_option(1) != 0:
-            raise NotYetSupported(
-                f"{statement.major} on a positioning machine (TOOLGP)", statement.where
+            raise NotYetSupported(f"{statement.major} on a positioning machine (TOOLGP)", where)
+        numbers = _plain_numbers(statement)
+        offset = _offset(statement)
+        if not 1 <= len(numbers) <= positions or any(n < 0 or n != int(n) for n in numbers):
+            expected = "one tool number" if positions == 1 else "a tool and a turret position"
+            raise InputError(
+                f"{statement.major} expects {expected}, whole numbers >= 0", statement.where
             )
-        if machine.number_option(132) != 1:
-            raise NotYetSupported(f"{statement.major} on a lathe (TOOLL)", statement.where)
-        tool = numbers[0]
-        self.state.tool.number = tool
-        if machine.registers.formats[13] is not None:
-            self.state.remember(T_CODE, tool)
-        change = machine.m_code(7)
+        return int(numbers[0]), words, offset
+
+    def _comtat(self, tool: int, position: int, offset: int, where: SourcePosition) -> int:
+        """COMTAT: the fields of option 96's layout, packed first digit first."""
+        layout_type = int(self.state.machine.number_option(96))
+        layout = T_LAYOUTS.get(layout_type)
+        if layout is None:
+            raise NotYetSupported(f"T-word layout type {layout_type} (option 96)", where)
+        values = {"tool": tool, "position": position, "offset": offset}
+        code = 0
+        for field, digits in layout:
+            value = values[field]
+            if digits and value >= 10**digits:
+                raise InputError(
+                    f"TURRET {field} {value} does not fit the {digits} digit(s) option 96 = "
+                    f"{layout_type} gives it",
+                    where,
+                )
+            code = code * 10**digits + value if digits else value
+        return code
+
+    def _load(
+        self,
+        statement: Statement,
+        station: int,
+        t_code: int,
+        words: list[str],
+        index_cell: int | None,
+    ) -> None:
+        machine = self.state.machine
+        self.state.tool.number = station
+        has_t = machine.registers.formats[13] is not None
+        if has_t:
+            self.state.remember(T_CODE, t_code)
+        change = machine.m_code(TOOL_CHANGE if index_cell is None else index_cell)
         if change is not None:
             self.output.store_m(change)
-        if machine.registers.formats[13] is not None:
+        direction = next((_DIRECTIONS[w] for w in words if w in _DIRECTIONS), None)
+        if direction is None:
+            direction = self._shorter_way(station)
+        if direction is not None:
+            self._store(direction, statement.where)
+        self.position = station
+        if has_t:
             block = self.output.dwell(machine.number_option(83))
             block.record = statement.number
-            block.cells[13] = tool
+            block.cells[13] = t_code
             self.output.output(block)
+
+    def _shorter_way(self, station: int) -> int | None:
+        """MINMOV: with option 88 = -N (N stations, turned by M codes) the shorter way from
+        the present station, CLW toward higher numbers (stations are numbered CLW looking
+        at the magazine from the top, TABLEM 83-84 note)."""
+        count = self.state.machine.number_option(88)
+        if count >= 0 or self.position is None:
+            return None
+        stations = int(-count)
+        distance = (station - self.position) % stations
+        if distance == 0:
+            return None
+        return TURN_CLW if distance <= stations / 2 else TURN_CCLW
+
+    def _store(self, cell: int, where: SourcePosition) -> None:
+        code = self.state.machine.m_code(cell)
+        if code is None:
+            self.warn(Diagnostic(NOT_AVAILABLE, where))
+            return
+        self.output.store_m(code)
+
+
+def _plain_numbers(statement: Statement) -> list[float]:
+    """The numbers not taken by OFSETL, k."""
+    numbers: list[float] = []
+    args = statement.args
+    skip = False
+    for index, arg in enumerate(args):
+        if skip:
+            skip = False
+            continue
+        if isinstance(arg, Word):
+            skip = arg.name == "OFSETL" and index + 1 < len(args)
+            continue
+        numbers.append(float(arg))
+    return numbers
+
+
+def _offset(statement: Statement) -> int | None:
+    args = statement.args
+    for index, arg in enumerate(args):
+        if isinstance(arg, Word) and arg.name == "OFSETL":
+            if index + 1 >= len(args) or isinstance(args[index + 1], Word):
+                raise InputError(
+                    f"{statement.major} OFSETL expects an offset number", statement.where
+                )
+            value = float(args[index + 1])  # type: ignore[arg-type]
+            if value < 0 or value != int(value) or value > 99:
+                raise InputError(
+                    f"{statement.major} OFSETL expects an offset 0-99, found {value:g}",
+                    statement.where,
+                )
+            return int(value)
+    return None

@@ -24,6 +24,10 @@ def tool(run: Run, statement: Statement) -> None:
     run.tool.statement(statement)
 
 
+def turret(run: Run, statement: Statement) -> None:
+    run.tool.turret(statement)
+
+
 def rotate(run: Run, statement: Statement) -> None:
     """ROTATE/TABLE|HEAD: an incremental rotary system on a contouring machine (ROTABI);
     absolute systems belong to positioning machines (ROTABA)."""
@@ -38,5 +42,6 @@ HANDLERS = {
     "SPINDL": spindl,
     "TOOLNO": tool,
     "LOADTL": tool,
+    "TURRET": turret,
     "ROTATE": rotate,
 }
