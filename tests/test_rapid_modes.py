@@ -131,3 +131,14 @@ def test_one_m_code_per_axis_flushes_the_waiting_code() -> None:
         "N005G04M44",
         "N005G01X+02F300M46",
     ]
+
+
+def test_rapid_rates_follow_the_machine_axes() -> None:
+    """Options 42-44 are the machine's X, Y, Z rates: MACH04 sets 43 = 0 (a lathe has no
+    Y), so its cross slide (CL y, the lathe's X by option 59) moves at option 42 = 100 IPM.
+    (10, 3) -> (8.5, 1.2): rho = max(1.5 / 100, 1.8 / 100) = .018 min, the command
+    10 x (2.343 / .018) / 2.343 = 555.56 (not 666.67, as if the cross slide had no rate)."""
+    lathe = get_plugins().machine("mach04").load()
+    result = post(["FROM/10,3,0", "RAPID", "GOTO/8.5,1.2,0"], lathe)
+    (block,) = [b for b in result.blocks if b.rapid]
+    assert float(block.cells[11]) == 555.56

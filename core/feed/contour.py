@@ -130,11 +130,21 @@ class RapidCommand:
     The command is held to |option 45|; a negative option 45 outputs no rapid F.
     """
 
-    def __init__(self, machine: MachineDefinition) -> None:
+    def __init__(
+        self,
+        machine: MachineDefinition,
+        axis_cells: tuple[tuple[int, float] | None, ...] = (),
+    ) -> None:
         fmt = machine.registers.formats[11]
         self.decimals = fmt.right if fmt is not None else 0
         self.vector = machine.number_option(36)
-        self.rates = tuple(machine.number_option(n) for n in (42, 43, 44))
+        # options 42-44 are the machine's X, Y, Z rates (MACH04 sets 43 = 0: a lathe has no
+        # Y); each CL axis moves at the rate of the register option 59 puts it on
+        by_register = {3: 42, 4: 43, 5: 44}
+        self.rates = tuple(
+            machine.number_option(by_register.get(target[0], 42 + axis) if target else 42 + axis)
+            for axis, target in enumerate((*axis_cells, None, None, None)[:3])
+        )
         self.low_rate = machine.number_option(39)
         limit = machine.number_option(45)
         self.output = limit >= 0

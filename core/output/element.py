@@ -51,10 +51,10 @@ class OutputElement:
         self.linear_codes = LinearCodes(machine, self.step)
         self.circular_codes = CircularCodes(machine)
         self.feed = FeedCommand(machine)
-        self.rapid = RapidCommand(machine)
         self.cut_minutes = 0.0
         self.dwell_minutes = 0.0
         self.words = WordFormatter(machine)
+        self.rapid = RapidCommand(machine, self.words.shuffle[:3])
         self.optimiser = FeedOptimiser(machine, self.linear_codes, self.feed, self.words.shuffle)
         self.slide_limits = SlideLimits(machine, self.words.shuffle)
         dwell_g = machine.g_code(5)
