@@ -35,7 +35,7 @@ from gecent.core.errors import (
     RunStopped,
     SourcePosition,
 )
-from gecent.core.feed.rapid import RapidTraverse
+from gecent.core.feed.rapid import MODAL, RapidTraverse
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.machine.selection import (
     first_machin,
@@ -262,9 +262,11 @@ class Run:
             return
         if self.state.threading.armed and record.subtype is not MotionSubtype.FROM:
             feed = self.state.feed
-            if feed.rapid_requested or feed.rapid_mode:
+            if feed.rapid_requested or feed.rapid_mode == MODAL:
                 self.warn(Diagnostic(RAPID_THREAD, record.where))
                 feed.rapid_requested = False
+            if feed.rapid_mode:
+                self.rapid.leave()  # a thread is cut in the feed range
             self.thread.record(record)
             return
         if record.subtype is not MotionSubtype.FROM:

@@ -27,7 +27,8 @@ class Position:
 
 @dataclass(slots=True)
 class Feed:
-    """FEDIPM, FDHOLD, FRMOD and the rapid flags RAPFLG, FLRPON, FRAPID (001 L17011-18104)."""
+    """FEDIPM, FDHOLD, FRMOD, the rapid flags RAPFLG, FLRPON, FRAPID, the feed range IFDRNG and
+    MAXIPM's SFMAXI (001 L17011-18104, L17356)."""
 
     ipm: float = 0.0
     programmed: float | None = None
@@ -37,6 +38,8 @@ class Feed:
     rapid_mode: int = 0  # FLRPON: 0 off, +1 one-shot, -1 modal
     rapid_ipm: float = 0.0  # FRAPID: 0 = not rapid; negative = rapid; positive = reader-limited
     rapid_low: bool = False  # RAPLOW: a move shorter than option 37 stays in the feed range
+    range: int = 0  # IFDRNG: the feed range of a multi-range machine (option 18); 0 = none yet
+    maximum_ipm: float | None = None  # SFMAXI: FEDRAT/...,MAXIPM,v, held to the range's FRMAX
 
 
 @dataclass(slots=True)

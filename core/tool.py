@@ -66,7 +66,7 @@ class ToolElement:
         allowed = ("OFSETL", "CLW", "CCLW", "FRONT", "REAR")
         tool, words, offset = self._parse(statement, allowed=allowed, positions=2)
         numbers = _plain_numbers(statement)
-        position = numbers[1] if len(numbers) > 1 else tool
+        position = int(numbers[1]) if len(numbers) > 1 else tool
         t_code = self._comtat(tool, position, offset or 0, statement.where)
         for word in words:
             if word in _TURRETS:

@@ -18,9 +18,11 @@ LATHE = ["FROM/5,2,0", "FEDRAT/10", "GOTO/63,2,0", "GOTO/63,-1,0", "GOTO/10,-10,
 
 def test_mach04_warns_for_each_point_beyond_a_limit() -> None:
     """MACH04: X (CL x) 0..62, Y (CL y, signed -1 by option 59 = +Z-X) -9..26, Z untested
-    (0/0). x = 63 is beyond on records 3 and 4; y = -10 gives +10, within."""
+    (0/0). x = 63 is beyond on records 3 and 4; y = -10 gives +10, within. FEDRAT/10 names
+    no range on this two-range lathe: option 91's is assumed (001 L31199)."""
     result = post(LATHE, get_plugins().machine("mach04").load())
     assert [(d.where.record if d.where else None, d.text) for d in result.diagnostics] == [
+        (2, "OPTION FEED RATE RANGE ASSUMED."),
         (3, "X AXIS SLIDE LIMIT HAS BEEN EXCEEDED *** WARNING"),
         (4, "X AXIS SLIDE LIMIT HAS BEEN EXCEEDED *** WARNING"),
     ]

@@ -270,13 +270,15 @@ class ThreadElement:
             sign = 1.0 if part[axis] > 0 else -1.0
             block.cells[3 + axis] = sign * (along - 10.0)
         block.cells[2] = float(g_code)
-        scaled = out_lead * 10**k
+        # rounded to 12 digits first, so an exact decimal (.000625 x 10) rounds half up at
+        # output as it would by hand, not down from its binary neighbour .0062499...
+        scaled = round(out_lead * 10**k, 12)
         other = 1 - axis
         block.cells[8 + axis] = scaled
         if other < len(part) and part[other]:
-            block.cells[8 + other] = abs(part[other] * scaled / part[axis])
+            block.cells[8 + other] = round(abs(part[other] * scaled / part[axis]), 12)
         if rate:
-            block.cells[11] = abs(rate) * 10**k
+            block.cells[11] = round(abs(rate) * 10**k, 12)
             block.f_format = regfor
         return block
 

@@ -20,10 +20,12 @@ def handlers() -> dict[str, Handler]:
     from gecent.core.statements import (
         auxiliary,
         coordinates,
+        cutcom,
         cycle,
         delay,
         feed,
         machine,
+        select,
         spindle_tool,
         tape,
         text,
@@ -42,6 +44,8 @@ def handlers() -> dict[str, Handler]:
         coordinates,
         cycle,
         threading,
+        cutcom,
+        select,
     )
     for module in modules:
         table.update(module.HANDLERS)

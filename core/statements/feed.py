@@ -1,72 +1,215 @@
-"""FEDRAT and RAPID (manual §4.1, 001 L31113-31212; §4.1.4, L11809-11910)."""
+"""FEDRAT and RAPID (manual §4.1, 001 L31113-31212; §4.1.4, L11809-11910), with the feed
+ranges of a multi-range machine (option 18, FRTAB; options 91, 93, 219; TABLEM 113-119)."""
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
-from gecent.core.cl.records import Statement, Word
+from gecent.core.cl.records import Arg, Statement, Word
 from gecent.core.errors import Diagnostic, InputError, NotYetSupported
-from gecent.core.spindle import assumed_speed
+from gecent.core.reinstate import FEED_M
+from gecent.core.spindle import NOT_AVAILABLE, assumed_speed
 
 _FEED_UNITS = ("IPM", "MMPM", "IPR", "MMPR")
+# FEDRAT/...,RANGE,LOW|MEDIUM|HIGH: the manual scans for the three words, then for a number
+_RANGE_WORDS = {"LOW": 1, "MEDIUM": 2, "HIGH": 3}
+_FIRST_RANGE_CELL = 113  # TABLEM(112 + r) is feed range r's M code (001 L23541-23576)
+RANGE_ASSUMED = "OPTION FEED RATE RANGE ASSUMED."  # 001 L31199-31200
+RANGE_NOT_AVAILABLE = "RANGE REQUESTED IS NOT AVAILABLE, USE HIGHEST"  # SPINDL's, 001 L37617
 
 if TYPE_CHECKING:
     from gecent.core.run import Run
 
 
+@dataclass(slots=True)
+class _Request:
+    """What one FEDRAT statement says: the feed (FDHOLD), its unit word (FRMOD), the
+    range (IRANGE) and MAXIPM (SFMAXI); None for what it does not say."""
+
+    value: float | None = None
+    unit: Word | None = None
+    range: int | None = None
+    maximum: float | None = None
+
+
 def fedrat(run: Run, statement: Statement) -> None:
-    """FEDRAT/f[,IPM|IPR] or FEDRAT/IPM,f (001 L31113-31212): the feed in machine
-    units per minute (per revolution: times the spindle speed), clamped to the
-    machine's range (options 48 and 25); the command is made at output. MMPM and MMPR
-    are APT IV's; a bare value is in the CL unit and keeps the last mode."""
-    numbers = statement.numbers()
-    words = [a for a in statement.args if isinstance(a, Word)]
-    unbuilt = [w.name for w in words if w.name not in _FEED_UNITS]
-    if unbuilt or len(words) > 1:
-        raise NotYetSupported(f"FEDRAT/{(unbuilt or [words[1].name])[0]}", statement.where)
-    if len(numbers) != 1:
+    """FEDRAT/f[,IPM|IPR][,RANGE,LOW|MEDIUM|HIGH|n][,MAXIPM,v] or FEDRAT/IPM,f
+    (001 L31113-31212), in the manual's order: the feed in machine units per minute (per
+    revolution: times the spindle speed); option 109's rapid test; the range change
+    (STOREM of its M code, STATE(6), the option-93 dwell); the range's limits FRMIN/FRMAX
+    for MAXIPM and the feed. MMPM and MMPR are APT IV's; a bare value is in the CL unit and
+    keeps the last mode. Without a feed value the held one is kept (FEDRAT/RANGE,2)."""
+    request = _scan(statement)
+    feed = run.state.feed
+    ipm: float | None = None
+    if request.value is not None:
+        value = run.units.per_minute(request.value, request.unit)
+        if value <= 0:
+            raise InputError(
+                f"FEDRAT needs a positive feedrate, found {request.value:g}", statement.where
+            )
+        ipm = _mode_ipm(run, value, request.unit, statement)
+    elif feed.programmed is not None:  # FDHOLD: the last feed, in its mode
+        ipm = _revolution_ipm(run, statement) if feed.per_revolution else feed.programmed
+    # option 109 = +1/+2: a feed above option 25 is a rapid request; tested before the
+    # range, as the manual orders it (step 6)
+    rapid = ipm is not None and run.rapid.feedrate(ipm, run.machine.number_option(25))
+    _select_range(run, request.range, statement)
+    if request.maximum is not None:
+        maximum = run.units.per_minute(request.maximum, request.unit)
+        if maximum <= 0:
+            raise InputError(
+                f"FEDRAT MAXIPM needs a positive feedrate, found {request.maximum:g}",
+                statement.where,
+            )
+        feed.maximum_ipm = min(maximum, feed_limits(run)[1])
+    if ipm is not None:
+        _hold_feed(run, ipm, statement, report=not rapid)
+
+
+def _scan(statement: Statement) -> _Request:
+    """The statement's items in order: one feed value, at most one unit word (before or
+    after it), RANGE and MAXIPM each with the item after them."""
+    request = _Request()
+    values: list[float] = []
+    args = statement.args
+    index = 0
+    while index < len(args):
+        arg = args[index]
+        index += 1
+        if not isinstance(arg, Word):
+            values.append(float(arg))
+            continue
+        name = arg.name
+        if name in _FEED_UNITS and request.unit is None:
+            request.unit = arg
+        elif name in ("RANGE", "MAXIPM"):
+            if index >= len(args):
+                raise InputError(f"FEDRAT {name} needs a value after it", statement.where)
+            item = args[index]
+            index += 1
+            if name == "MAXIPM":
+                if isinstance(item, Word):
+                    raise InputError("FEDRAT MAXIPM expects a feedrate value", statement.where)
+                request.maximum = float(item)
+            else:
+                request.range = _range_number(item, statement)
+        else:
+            raise NotYetSupported(f"FEDRAT/{name}", statement.where)
+    # a feed value may be left out only when RANGE or MAXIPM says something (FEDRAT/RANGE,2)
+    alone = request.range is None and request.maximum is None
+    if len(values) > 1 or (not values and (alone or request.unit is not None)):
+        raise InputError(f"FEDRAT expects one feedrate value, found {len(values)}", statement.where)
+    request.value = values[0] if values else None
+    return request
+
+
+def _range_number(item: Arg, statement: Statement) -> int:
+    if isinstance(item, Word):
+        if item.name not in _RANGE_WORDS:
+            raise InputError(
+                "FEDRAT RANGE expects LOW, MEDIUM, HIGH or a range number", statement.where
+            )
+        return _RANGE_WORDS[item.name]
+    number = float(item)
+    if number < 1 or number != int(number):
         raise InputError(
-            f"FEDRAT expects one feedrate value, found {len(numbers)}", statement.where
+            f"FEDRAT RANGE expects a range number 1, 2, ..., found {number:g}", statement.where
         )
-    unit = words[0] if words else None
-    value = run.units.per_minute(numbers[0], unit)
-    if value <= 0:
-        raise InputError(f"FEDRAT needs a positive feedrate, found {numbers[0]:g}", statement.where)
-    program_feed(run, value, unit, statement, from_fedrat=True)
+    return int(number)
 
 
-def program_feed(
-    run: Run, value: float, unit: Word | None, statement: Statement, *, from_fedrat: bool = False
-) -> None:
-    """A programmed feed in machine units (FEDRAT's, or a cycle's): per minute or per
-    revolution as its unit word says, or in the last mode without one."""
+def _select_range(run: Run, requested: int | None, statement: Statement) -> None:
+    """Step 7 (001 L31170-31185), only on a machine with several feed ranges (option 18 > 1):
+    a range different from the present one STOREs its M code TABLEM(112 + r), records it in
+    STATE(6) for reinstatement (negative while stopped) and makes the option-93 dwell;
+    no range ever given: option 91's range is assumed, with the comment, once."""
+    machine = run.machine
+    count = int(machine.number_option(18))
+    feed = run.state.feed
+    if count <= 1:
+        return  # one range: nothing to select
+    if requested is None:
+        if feed.range == 0:
+            run.warn(Diagnostic(RANGE_ASSUMED, statement.where))
+            feed.range = min(max(int(machine.number_option(91)), 1), count)
+        return
+    if requested > count:
+        run.warn(Diagnostic(RANGE_NOT_AVAILABLE, statement.where))
+        requested = count
+    if requested == feed.range:
+        return
+    feed.range = requested
+    code = machine.m_code(_FIRST_RANGE_CELL + requested - 1)
+    if code is None:
+        run.warn(Diagnostic(NOT_AVAILABLE, statement.where))
+        return
+    output = run.output
+    output.store_m(code)
+    run.state.remember(FEED_M, code)
+    seconds = machine.number_option(93)
+    if seconds < 0:
+        # "dwell is output by a special machine function subroutine" (001 L25507-25511)
+        raise NotYetSupported("feed range change dwell by MACFUN (option 93 < 0)", statement.where)
+    if seconds > 0:
+        if machine.number_option(219) == 1:
+            output.flush_m(statement.number)  # the M code in a block before the dwell
+        block = output.dwell(seconds)
+        block.record = statement.number
+        output.output(block)
+
+
+def feed_limits(run: Run) -> tuple[float, float]:
+    """FRMIN, FRMAX (step 8): the present range's FRTAB pair on a machine with several
+    ranges (option 25 >= 0: FRTAB holds one pair per range), else options 48 and 25."""
+    machine = run.machine
+    number = run.state.feed.range
+    ranges = machine.feed_ranges
+    if (
+        machine.number_option(18) > 1
+        and machine.number_option(25) >= 0
+        and 1 <= number <= len(ranges)
+    ):
+        return ranges[number - 1]
+    return machine.number_option(48), machine.number_option(25)
+
+
+def program_feed(run: Run, value: float, unit: Word | None, statement: Statement) -> None:
+    """A programmed feed in machine units (a cycle's): per minute or per revolution as its
+    unit word says, or in the last mode without one."""
+    _hold_feed(run, _mode_ipm(run, value, unit, statement), statement)
+
+
+def feed_per_revolution(run: Run, statement: Statement) -> None:
+    """FEDIPM = FEDIPR x the spindle speed, again at every speed change."""
+    _hold_feed(run, _revolution_ipm(run, statement), statement)
+
+
+def _mode_ipm(run: Run, value: float, unit: Word | None, statement: Statement) -> float:
     feed = run.state.feed
     if unit is not None:
         feed.per_revolution = unit.name in ("IPR", "MMPR")
-    if feed.per_revolution:
-        feed.per_revolution_value = value
-        feed_per_revolution(run, statement, from_fedrat=from_fedrat)
-    else:
-        set_feed(run, value, statement, from_fedrat=from_fedrat)
+    if not feed.per_revolution:
+        return value
+    feed.per_revolution_value = value
+    return _revolution_ipm(run, statement)
 
 
-def feed_per_revolution(run: Run, statement: Statement, *, from_fedrat: bool = False) -> None:
-    """FEDIPM = FEDIPR x the spindle speed, again at every speed change."""
+def _revolution_ipm(run: Run, statement: Statement) -> float:
     speed = run.state.spindle.speed
     if speed is None:
         run.warn(Diagnostic("NO SPINDLE SPEED GIVEN FOR IPR MODE.", statement.where))
         speed = run.state.spindle.speed = assumed_speed(run.machine, statement.where)
-    set_feed(run, run.state.feed.per_revolution_value * speed, statement, from_fedrat=from_fedrat)
+    return run.state.feed.per_revolution_value * speed
 
 
-def set_feed(run: Run, feed: float, statement: Statement, *, from_fedrat: bool = False) -> None:
-    """FEDIPM within options 48 and 25; only a FEDRAT can ask for rapid by its feed
-    (option 109 = +1/+2)."""
-    low, high = run.machine.number_option(48), run.machine.number_option(25)
+def _hold_feed(run: Run, feed: float, statement: Statement, *, report: bool = True) -> None:
+    """TSTEXT: FEDIPM within FRMIN..FRMAX, with a comment when it was not (none for a feed
+    that option 109 turned into a rapid request)."""
+    low, high = feed_limits(run)
     used = min(max(feed, low), high)
-    if from_fedrat and run.rapid.feedrate(feed, high):
-        pass  # option 109 = +1/+2: the feed above the range is a rapid request
-    elif used != feed:
+    if report and used != feed:
         per_minute = "MMPM" if run.units.machine_mm == 1.0 else "IPM"
         run.warn(
             Diagnostic(

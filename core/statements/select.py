@@ -1,0 +1,79 @@
+"""SELECT (SLCTGB, manual 001 L36895-36925): the minor word names the subroutine. Built:
+FEDOVR (feedrate override, L31066-31100), PALLET (SELPAL) and READER (SELRDR)
+(L37184-37248), each an M code in a block by itself. OFSETL, TABLE, HED and TOOL belong to
+positioning, multihead and multiaxis machines and are not built yet.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from typing import TYPE_CHECKING
+
+from gecent.core.cl.records import Statement, Word
+from gecent.core.errors import Diagnostic, InputError, NotYetSupported
+from gecent.core.output.block import Block, Code
+from gecent.core.spindle import NOT_AVAILABLE
+
+if TYPE_CHECKING:
+    from gecent.core.run import Run
+
+# FEDOVR's own text: "If ON is given, TABLEM(112) is output. If OFF is given, TABLEM(111)"
+# (001 L31094-31096), though the TABLEM chart names 111 "on" and 112 "off" (L23537-23539):
+# the routine is what the program does, so a machine file follows it
+FEED_OVERRIDE_CELLS = {"ON": 112, "OFF": 111}
+PALLET_CELL = 13  # "Pallet select change" (001 L23103)
+READER_CELL = 14  # "Switch reader" (001 L23105)
+
+
+def select(run: Run, statement: Statement) -> None:
+    args = statement.args
+    if not args or not isinstance(args[0], Word):
+        raise InputError(
+            "SELECT expects a minor word first (FEDOVR, PALLET, READER, ...)", statement.where
+        )
+    minor = args[0].name
+    handler = _MINORS.get(minor)
+    if handler is None:
+        raise NotYetSupported(f"SELECT/{minor}", statement.where)
+    handler(run, statement)
+
+
+def _feed_override(run: Run, statement: Statement) -> None:
+    """SELECT/FEDOVR,ON|OFF (FEDOVR)."""
+    rest = statement.args[1:]
+    if len(rest) != 1 or not isinstance(rest[0], Word) or rest[0].name not in ("ON", "OFF"):
+        raise InputError("SELECT/FEDOVR expects ON or OFF", statement.where)
+    _code_by_itself(run, statement, FEED_OVERRIDE_CELLS[rest[0].name])
+
+
+def _numbered(cell: int, minor: str) -> Callable[[Run, Statement], None]:
+    """SELECT/PALLET[,n] and SELECT/READER[,n]: the machine has one code for each
+    (TABLEM 13, 14), so n names the pallet or reader for the programmer, not the tape."""
+
+    def handler(run: Run, statement: Statement) -> None:
+        rest = statement.args[1:]
+        if len(rest) > 1 or any(isinstance(a, Word) or a < 1 or a != int(a) for a in rest):
+            raise InputError(f"SELECT/{minor} expects a {minor.lower()} number", statement.where)
+        _code_by_itself(run, statement, cell)
+
+    return handler
+
+
+def _code_by_itself(run: Run, statement: Statement, cell: int) -> None:
+    """TABLEM(cell) in a block by itself (STOREM, then OUTPUT with CODE -1); comment 22
+    when the machine has no such code."""
+    code = run.machine.m_code(cell)
+    if code is None:
+        run.warn(Diagnostic(NOT_AVAILABLE, statement.where))
+        return
+    run.output.store_m(code)
+    run.output.output(Block(Code.AUX_ONLY, statement.number))
+
+
+_MINORS: dict[str, Callable[[Run, Statement], None]] = {
+    "FEDOVR": _feed_override,
+    "PALLET": _numbered(PALLET_CELL, "PALLET"),
+    "READER": _numbered(READER_CELL, "READER"),
+}
+
+HANDLERS = {"SELECT": select}
