@@ -6,7 +6,8 @@ from __future__ import annotations
 import pytest
 from gecent.core.errors import InputError
 from gecent.core.machine.definition import MachineDefinition
-from gecent.core.machine.loader import standard_machine
+from gecent.core.machine.loader import load_machine_text, standard_machine
+from gecent.core.output.block import Code
 from gecent.core.output.punch import punch, unpunch
 from gecent.core.output.tape import tape_lines
 from gecent.core.plugins import get_plugins
@@ -151,3 +152,29 @@ def test_origin_in_the_operator_printout() -> None:
     text = printout.render(lathe, shifted.blocks, "")
     line = next(row for row in text.splitlines() if row.startswith("FROM"))
     assert "-1.5000" in line and "+4.0000" in line
+
+
+def test_air_codes_by_themselves() -> None:
+    """AIR/ON -> TABLEM(123), AIR/OFF -> TABLEM(124), each in a block by itself (001
+    L28677-28716); a machine without them warns."""
+    text = '[machine]\nname = "air"\n[tablem]\n123 = 51\n124 = 52\n'
+    machine = load_machine_text(text, "air.toml")
+    result = post(["AIR/ON", "AIR/OFF"], machine)
+    assert [b.punch for b in result.blocks if b.punch] == ["N001M51", "N002M52"]
+    plain = post(["AIR/ON"])
+    assert [d.text for d in plain.diagnostics] == [
+        "REQUESTED MISCELLANEOUS FUNCTION CODE IS NOT AVAILABLE ON THIS MACHINE"
+    ]
+
+
+def test_reset_is_end_without_its_code() -> None:
+    """RESET (END's entry, CODE -5, neither printed nor punched): TRANS and the stop are
+    reset and the next motion must be a FROM (comment 47)."""
+    result = post(["FROM/0,0,0", "TRANS/1,0,0", "RESET", "GOTO/1,0,0"])
+    assert [b.code for b in result.blocks if b.code == Code.RESET] == [Code.RESET]
+    assert [b.punch for b in result.blocks if b.punch] == [
+        "N004G01X+1F050"
+    ]  # option 23's assumed feed
+    assert [d.text for d in result.diagnostics][:1] == [
+        "END OR RESET HAS NOT BEEN FOLLOWED BY A FROM POINT."
+    ]

@@ -110,10 +110,10 @@ def test_post_machine_override_and_option_change(tmp_path: Path) -> None:
 
 def test_unsupported_statement_stops_without_output(tmp_path: Path) -> None:
     source = tmp_path / "u.apt"
-    source.write_text("PARTNO X\nMACHIN/GECENT,23\nAIR/ON\nFINI\n")
+    source.write_text("PARTNO X\nMACHIN/GECENT,23\nWELD/ON\nFINI\n")
     code, _, err = run("post", str(source))
     assert code == 3
-    assert err.strip() == f"{source}:3 (record 3): error: not yet supported: AIR statement"
+    assert err.strip() == f"{source}:3 (record 3): error: not yet supported: WELD statement"
     assert not (tmp_path / "u.tape").exists() and not (tmp_path / "u.lis").exists()
 
 

@@ -13,6 +13,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
+import pytest
 from gecent.core.output.tape import tape_lines
 from gecent.core.plugins import get_plugins
 from gecent.core.run import post
@@ -65,3 +66,87 @@ def test_mill_program_on_mach23_block_by_block() -> None:
     ]
     assert result.diagnostics[0].where is not None
     assert result.diagnostics[0].where.line == 33
+
+
+# MACH04 (the sample lathe, 001 L27681-27799) with OPTAB 30 = 1 (OPSKIP) and 145 = 1 (full
+# reinstatement) from the program's MACHIN: CL x is the lathe's Z, CL y its -X (option 59
+# +Z-X); formats 14 for X, Z, I, K; F 3.2 inverse time, G11 below 1 inch (x 1) and G01
+# from 1 inch (x 10); rapid at 100 IPM on each machine axis (options 42, 44), command held
+# to option 45 = 750; gear codes M40 into rapid (TABLEM 42) and the feed range's own code
+# back (range 2: TABLEM(114) = M41); dwells in Z over option 56 = 10; G04 fills every block
+# without a G (option 38 = 1).
+LATHE_ON_MACH04 = [
+    "SHAFT3301OP20",
+    # TOOLNO/1,OFSETL,1: T = 1 x 100 + 1, M06, option 83's 2 s dwell (Z+0.2)
+    "N010G04Z+02T00101M06",
+    # SPINDL/250,CLW: range 2 (18-600), magic three 625, TABLEM(74) = M62
+    "N011G04S625M62",
+    # COOLNT/ON's M08 waits; the rapid's M40 pushes it out (STOREM)
+    "N014G04M08",
+    # RAPID (10, 3) -> (8, 1.6): rho = 2 / 100 min, 10 x (2.441 / .02) / 2.441 = 500
+    "N014G01X+14Z-2F500M40",
+    # FEDRAT/4,IPM,RANGE,2: M41, also the way back from rapid; face 1.6 at 4 IPM: 40 / 1.6
+    "N016G01X+16F025M41",
+    # RAPID -> (8.1, 1.25): 10 / (1.25 / 100) = 800, held to option 45 = 750
+    "N018G01X-125Z+01F750M40",
+    # FEDRAT/6: turn 5.1 inches: 60 / 5.1 = 11.76
+    "N020G01Z-51F01176M41",
+    "N021G11X-035F01714",  # the shoulder, .35 at 6 IPM in G11: 6 / .35
+    "N022G04Z+02",  # DELAY/2
+    "N023G04M00",  # STOP: M00 in a block by itself; spindle and coolant are off
+    # the first motion after the stop reinstates: T in a block, S with its direction M,
+    # the feed range's M41 (pushed out by the coolant's M08, which rides in the motion)
+    "N024G04T00101",
+    "N024G04S625M62",
+    "N024G04M41",
+    "N024G11Z+01F060M08",  # .1 at 6 IPM: 6 / .1
+    # OPSKIP/ON (option 30 = 1): a spring pass the operator may skip
+    "/N026G01Z+5F012",
+    "/N027G11X+036F01667",
+    "/N028G01Z-51F01176",
+    # RAPID home (10, 3) from (3, 1.24): 10 x 100 / 7 = 142.86
+    "N031G01X-176Z+7F14286M40",
+    "N033G04Z+02T00202M06",  # TOOLNO/2,OFSETL,2
+    # SPINDL/100: range 1; running 250 > .25 x 600 (option 137 = -.25): the protective
+    # shift through 150 RPM (S615) with its 6 s dwell first, then S610 and M60
+    "N034G04Z+06S615",
+    "N034G04S610M60",
+    "N035G04Z+01M50",  # COUPLE/ON: M50 in option 92's 1 s dwell block
+    # RAPID (still in rapid) -> (8.5, 1.2): 10 / (1.8 / 100) = 555.56
+    "N038G01X+18Z-15F55556",
+    # PITCH/8,INCR,10: the lead decreases, G35; .125 x M (10) = K1.25; THRATE =
+    # (.1^2 - .125^2) / (2 x 4.5) = -.000625, F = .00625 -> .0063; the thread leaves rapid
+    "N040G35Z-45K125F00063M41",
+    "N042G11X-04F250M40",  # RAPID up .4: 100 / .4
+    "N043G04Z+01M51",  # COUPLE/OFF
+    "N045G01X-14Z+6F16667",  # RAPID home: 10 x 100 / 6
+    "N047G04M09",  # COOLNT/OFF waits, SPINDL/OFF's M05 pushes it out
+    "N047G04M05",
+    "N048G04Z+02T00000",  # END: option 97 = 2 s with T0
+    "N048G04M02",  # the end code, CODE +5
+    "(" * 72,  # option 11 = +1: a card of space codes (the tape image's "(")
+]
+
+
+def test_lathe_program_on_mach04_block_by_block() -> None:
+    """Facing, turning, a dwell, a stop with reinstatement, an OPSKIP spring pass, a tool
+    change and a variable-lead thread. The dwell time is the DELAY (2 s), the two tool
+    changes (2 + 2 s), the coupling (1 + 1 s), the protective shift (6 s) and END's T0
+    (2 s): 16 s = 0.27 min."""
+    result = post(str(EXAMPLES / "lathe_mach04.apt"), get_plugins())
+    assert tape_lines(result.blocks) == LATHE_ON_MACH04
+    assert result.diagnostics == []
+    assert round(result.dwell_minutes, 4) == round(16 / 60, 4)
+    thread = next(b for b in result.blocks if b.cells[2] == 35.0)
+    assert thread.cells[19] == 12.5  # 100 RPM x .125 in
+    assert thread.cut_minutes == pytest.approx((0.125 - 0.1) / 0.000625 / 100)  # 40 turns
+
+
+def test_lathe_program_listing_shows_skips_and_times() -> None:
+    plugins = get_plugins()
+    result = post(str(EXAMPLES / "lathe_mach04.apt"), plugins)
+    printout = plugins.get("printouts", 1)
+    listing = printout.render(result.machine, result.blocks, result.partno)
+    lines = listing.splitlines()
+    assert sum(1 for line in lines if line.startswith(" /0")) == 3
+    assert "DWELL TIME 0.27 MIN;" in listing

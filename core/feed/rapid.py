@@ -103,9 +103,21 @@ class RapidTraverse:
         shifted = not feed.rapid_low
         feed.rapid_mode, feed.rapid_ipm, feed.rapid_low = 0, 0.0, False
         if shifted:
-            self._shift(self.back_codes, self.back_dwell)
-            if self.shifting and self.back_codes:
-                self.state.remember(FEED_M, self.back_codes[-1])
+            codes = self._back_to_range() or self.back_codes
+            self._shift(codes, self.back_dwell)
+            if self.shifting and codes:
+                self.state.remember(FEED_M, codes[-1])
+
+    def _back_to_range(self) -> tuple[float, ...]:
+        """On a machine with feed ranges (option 18 > 1) the way back from rapid is the
+        present range's own code TABLEM(112 + r), not the single TABLEM(43) (FEDRAT's
+        RAPFED, 001 L31174-31180): MACH04's TABLEM(43) is range 2's M41, wrong in range 1."""
+        machine = self.state.machine
+        number = self.state.feed.range
+        if machine.number_option(18) <= 1 or number < 1:
+            return ()
+        code = machine.m_code(112 + number)
+        return () if code is None else (code,)
 
     def entrap(self) -> None:
         """ENTRAP (option 145 = -1 or -2): after a stop the machine is put in rapid gear, so

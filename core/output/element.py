@@ -194,8 +194,10 @@ class OutputElement:
 
     def store_m(self, code: float) -> None:
         """STOREM (001 L38041-38087): one M code waits for the next block; a second one
-        first goes out in a block of its own with the waiting one."""
-        if self.state.pending.m_code is not ABSENT:
+        first goes out in a block of its own with the waiting one (the same code again
+        is the same request and waits once)."""
+        pending = self.state.pending.m_code
+        if pending is not ABSENT and pending != code:
             self.output(Block(Code.AUX_ONLY))
         self.state.pending.m_code = code
 

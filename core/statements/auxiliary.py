@@ -16,7 +16,7 @@ from gecent.core.cl.records import Statement
 from gecent.core.errors import Diagnostic, InputError
 from gecent.core.output.block import Block, Code
 from gecent.core.output.marks import leader_block, stand_in
-from gecent.core.reinstate import COOLANT
+from gecent.core.reinstate import COOLANT, StateVector
 from gecent.core.spindle import NOT_AVAILABLE
 
 if TYPE_CHECKING:
@@ -140,6 +140,22 @@ def end(run: Run, statement: Statement) -> None:
         block = Block(Code.LEADER, statement.number)
         block.punch = stand_in(machine, 64) * FILLER_FRAMES if filler == 1 else ""
         run.text_block(block)
+    _reset(run)
+
+
+def reset(run: Run, statement: Statement) -> None:
+    """RESET, END's second entry: the same resets without the end code, as a CODE -5
+    block that is neither printed nor punched (001 L30909-30951)."""
+    if statement.args:
+        raise InputError("RESET takes no arguments", statement.where)
+    run.output.flush_m(statement.number)
+    run.text_block(Block(Code.RESET, statement.number))
+    _reset(run)
+
+
+def _reset(run: Run) -> None:
+    """ENDGB's resets: spindle, stop, rapid, TRANS and the STATE vector; a FROM must
+    follow (comment 47 otherwise)."""
     state = run.state
     _spindle_and_coolant_off(run)
     state.spindle.speed = None
@@ -148,6 +164,16 @@ def end(run: Run, statement: Statement) -> None:
     state.feed.rapid_requested = False
     state.feed.rapid_mode, state.feed.rapid_ipm, state.feed.rapid_low = 0, 0.0, False
     state.position.translation = (0.0, 0.0, 0.0)
+    state.conditions = StateVector()
+
+
+def air(run: Run, statement: Statement) -> None:
+    """AIR/ON|OFF: TABLEM(123) or (124) in a block by itself (001 L28677-28716)."""
+    words = list(statement.words())
+    if len(statement.args) != 1 or words not in (["ON"], ["OFF"]):
+        raise InputError("AIR expects AIR/ON or AIR/OFF", statement.where)
+    run.output.flush_m(statement.number)
+    _code_by_itself(run, statement, 123 if words[0] == "ON" else 124)
 
 
 def rewind(run: Run, statement: Statement) -> None:
@@ -210,6 +236,8 @@ def _whole_number(statement: Statement, major: str) -> float:
 
 
 HANDLERS = {
+    "AIR": air,
+    "RESET": reset,
     "COOLNT": coolnt,
     "STOP": stop,
     "OPSTOP": opstop,
