@@ -90,3 +90,23 @@ def test_fatal_24_also_for_ipr_feeds_without_a_speed(tmp_path: Path, option: str
     program = [f"MACHIN/GECENT,23,OPTAB,27,{option}", "FEDRAT/0.1,IPR"]
     code, err, tape, _ = run(tmp_path, program, None)
     assert code == 1 and not tape.exists() and "fatal error 24" in err
+
+
+def test_fatal_139_and_142_guard_the_segmentation() -> None:
+    """SELG's 139 and SELGCR's 142 are the manual's checks that segmentation did its work
+    (a departure or a radius beyond option 4 reaching the G-code choice); the motion
+    elements segment first and circles beyond option 4 go linear, so no CL input reaches
+    them. They are triggered at the selectors themselves: number, text, exit status 1."""
+    from gecent.core.errors import FatalError
+    from gecent.core.machine.loader import standard_machine
+    from gecent.core.motion.gcode import CircularCodes, LinearCodes
+
+    machine = standard_machine()
+    with pytest.raises(FatalError) as linear:
+        LinearCodes(machine, 0.0001).select(100_000)  # 10 inches > option 4 = 9.9999
+    assert linear.value.number == 139 and linear.value.exit_status == 1
+    assert "Segment too long; it should have been split" in str(linear.value)
+    with pytest.raises(FatalError) as circle:
+        CircularCodes(machine).select(12.0, True)
+    assert circle.value.number == 142 and circle.value.exit_status == 1
+    assert "Circle radius too large" in str(circle.value)
