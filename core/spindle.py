@@ -32,7 +32,6 @@ CLW, CCLW = 1, -1
 _DIRECTION_WORDS = {"CLW": CLW, "CCLW": CCLW}
 _M_CELL = {CLW: 4, CCLW: 5}
 _OFF_CELL = 6
-NOT_AVAILABLE = "REQUESTED MISCELLANEOUS FUNCTION CODE IS NOT AVAILABLE ON THIS MACHINE"
 
 
 @dataclass(frozen=True, slots=True)
@@ -226,11 +225,7 @@ class SpindleElement:
         self.output.output(Block(Code.AUX_ONLY, statement.number))
 
     def _store(self, cell: int, where: SourcePosition) -> None:
-        code = self.state.machine.m_code(cell)
-        if code is None:
-            self.warn(Diagnostic(NOT_AVAILABLE, where))
-            return
-        self.output.store_m(code)
+        self.output.store_cell(cell, self.warn, where)
 
 
 def assumed_speed(machine: MachineDefinition, where: SourcePosition | None) -> float:

@@ -31,7 +31,6 @@ TOOL_CHANGE, TURRET_INDEX, FRONT_TURRET, REAR_TURRET = 7, 8, 29, 30
 TURN_CLW, TURN_CCLW = 83, 84
 _DIRECTIONS = {"CLW": TURN_CLW, "CCLW": TURN_CCLW}
 _TURRETS = {"FRONT": FRONT_TURRET, "REAR": REAR_TURRET}
-NOT_AVAILABLE = "REQUESTED MISCELLANEOUS FUNCTION CODE IS NOT AVAILABLE ON THIS MACHINE"
 
 # option 96: the T word's fields, first digit first, with their digit counts (001
 # L25532-25560). The OCR damaged the type column; 0 and 3-6 are legible, 2 is the sample
@@ -161,11 +160,7 @@ class ToolElement:
         return TURN_CLW if distance <= stations / 2 else TURN_CCLW
 
     def _store(self, cell: int, where: SourcePosition) -> None:
-        code = self.state.machine.m_code(cell)
-        if code is None:
-            self.warn(Diagnostic(NOT_AVAILABLE, where))
-            return
-        self.output.store_m(code)
+        self.output.store_cell(cell, self.warn, where)
 
 
 def _plain_numbers(statement: Statement) -> list[float]:

@@ -131,19 +131,15 @@ class RapidCommand:
     """
 
     def __init__(
-        self,
-        machine: MachineDefinition,
-        axis_cells: tuple[tuple[int, float] | None, ...] = (),
+        self, machine: MachineDefinition, axis_cells: tuple[tuple[int, float] | None, ...]
     ) -> None:
         fmt = machine.registers.formats[11]
         self.decimals = fmt.right if fmt is not None else 0
         self.vector = machine.number_option(36)
         # options 42-44 are the machine's X, Y, Z rates (MACH04 sets 43 = 0: a lathe has no
-        # Y); each CL axis moves at the rate of the register option 59 puts it on
-        by_register = {3: 42, 4: 43, 5: 44}
+        # Y); each CL axis (option 59: to register 3, 4 or 5) moves at its register's rate
         self.rates = tuple(
-            machine.number_option(by_register.get(target[0], 42 + axis) if target else 42 + axis)
-            for axis, target in enumerate((*axis_cells, None, None, None)[:3])
+            machine.number_option(39 + target[0]) if target else 0.0 for target in axis_cells
         )
         self.low_rate = machine.number_option(39)
         limit = machine.number_option(45)

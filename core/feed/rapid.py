@@ -110,13 +110,13 @@ class RapidTraverse:
 
     def _back_to_range(self) -> tuple[float, ...]:
         """On a machine with feed ranges (option 18 > 1) the way back from rapid is the
-        present range's own code TABLEM(112 + r), not the single TABLEM(43) (FEDRAT's
-        RAPFED, 001 L31174-31180): MACH04's TABLEM(43) is range 2's M41, wrong in range 1."""
+        present range's own code, not the single TABLEM(43) (FEDRAT's RAPFED, 001
+        L31174-31180): MACH04's TABLEM(43) is range 2's M41, wrong in range 1."""
         machine = self.state.machine
         number = self.state.feed.range
         if machine.number_option(18) <= 1 or number < 1:
             return ()
-        code = machine.m_code(112 + number)
+        code = machine.m_code(feed_range_cell(number))
         return () if code is None else (code,)
 
     def entrap(self) -> None:
@@ -141,6 +141,11 @@ class RapidTraverse:
             self.store_m(code)
         if dwell > 0:
             self.emit(self.dwell(dwell))
+
+
+def feed_range_cell(number: int) -> int:
+    """TABLEM(112 + r): feed range r's M code (001 L23541-23576)."""
+    return 112 + number
 
 
 def _codes(

@@ -52,7 +52,7 @@ class LinearMotion:
             for point in record.points:
                 self._goto(record, point)
 
-    def _machine_point(self, part: list[float]) -> list[int]:
+    def machine_point(self, part: list[float]) -> list[int]:
         return [to_steps(part[axis], self.step) for axis in range(3)]
 
     def _from(self, record: Motion) -> None:
@@ -60,7 +60,7 @@ class LinearMotion:
         tx, ty, tz = position.translation
         x, y, z = record.points[0][:3]
         position.present_part[:3] = [x + tx, y + ty, z + tz]
-        position.present[:3] = self._machine_point(position.present_part)
+        position.present[:3] = self.machine_point(position.present_part)
         block = Block(Code.FROM, record.number)
         for axis in range(3):
             block.cells[3 + axis] = position.present[axis] * self.step
@@ -71,13 +71,15 @@ class LinearMotion:
         self.emit(block)
 
     def _godlta(self, record: Motion) -> None:
+        self._goto(record, self.godlta_point(record))
+
+    def godlta_point(self, record: Motion) -> tuple[float, ...]:
         """GODLTA adds its increments to the previous point (001 L4103-4128); TRANS is in the
         previous point already. One value moves along the tool axis (z)."""
         delta = godlta_delta(record.points[0])
         previous = self.state.position.previous_part
         tx, ty, tz = self.state.position.translation
-        point = tuple(previous[axis] + delta[axis] - (tx, ty, tz)[axis] for axis in range(3))
-        self._goto(record, point)
+        return tuple(previous[axis] + delta[axis] - (tx, ty, tz)[axis] for axis in range(3))
 
     def _goto(self, record: Motion, point: tuple[float, ...]) -> None:
         if len(point) != 3:
@@ -87,7 +89,7 @@ class LinearMotion:
         position = self.state.position
         tx, ty, tz = position.translation
         position.present_part[:3] = [point[0] + tx, point[1] + ty, point[2] + tz]
-        position.present[:3] = self._machine_point(position.present_part)
+        position.present[:3] = self.machine_point(position.present_part)
         departures = [position.present[a] - position.previous[a] for a in range(self.axes)]
         if not any(departures):
             return  # RETURN = -1: no move, the previous point stays (001 L4283-4290)

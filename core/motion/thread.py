@@ -27,7 +27,7 @@ from math import sqrt
 from gecent.core.cl.records import Motion, MotionSubtype
 from gecent.core.errors import Diagnostic, InputError, SourcePosition
 from gecent.core.machine.shuffle import cell_map
-from gecent.core.motion.linear import LinearMotion, godlta_delta
+from gecent.core.motion.linear import LinearMotion
 from gecent.core.motion.segments import segment_count, segments
 from gecent.core.output.block import Block, Code
 from gecent.core.spindle import TOO_FAST_FOR_THREADING, assumed_speed
@@ -81,15 +81,11 @@ class ThreadElement:
         threading.armed = False  # THREAD is one-shot (001 L15733-15736)
         if threading.lead is None:
             raise InputError("THREAD needs a PITCH statement before its motion", record.where)
-        if record.subtype is MotionSubtype.GODLTA:
-            previous = self.state.position.previous_part
-            tx, ty, tz = self.state.position.translation
-            delta = godlta_delta(record.points[0])
-            points: tuple[tuple[float, ...], ...] = (
-                tuple(previous[a] + delta[a] - (tx, ty, tz)[a] for a in range(3)),
-            )
-        else:
-            points = record.points
+        points = (
+            (self.motion.godlta_point(record),)
+            if record.subtype is MotionSubtype.GODLTA
+            else record.points
+        )
         axis = 1 if threading.facing else 0
         travel = self._travel(points, axis)
         if travel == 0.0:
@@ -211,7 +207,7 @@ class ThreadElement:
         motion = self.motion
         tx, ty, tz = position.translation
         position.present_part[:3] = [point[0] + tx, point[1] + ty, point[2] + tz]
-        position.present[:3] = motion._machine_point(position.present_part)
+        position.present[:3] = motion.machine_point(position.present_part)
         departures = [position.present[a] - position.previous[a] for a in range(motion.axes)]
         if not any(departures):
             return done

@@ -9,10 +9,11 @@ into the control's command (CONTUR, core/feed/contour.py) and formats each regis
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from math import asin, pi, radians
 
 from gecent.core.absent import ABSENT, Absent
-from gecent.core.errors import Diagnostic
+from gecent.core.errors import Diagnostic, SourcePosition
 from gecent.core.feed.contour import FeedCommand, RapidCommand
 from gecent.core.feed.optimise import FeedOptimiser
 from gecent.core.motion.gcode import CircularCodes, DimensionCode, LinearCodes, RotaryCodes
@@ -39,6 +40,8 @@ THREAD_CODES = frozenset({Code.THREAD_5, Code.THREAD_6})
 UNSHUFFLED = frozenset({Code.DWELL})
 # numeric blocks that get TABLEG(5) when they have no G and option 38 = +-1 (001 L24890-24907)
 G_FILLED = frozenset({Code.NONMOTION, Code.AUX_ONLY, Code.END, Code.DWELL})
+# comment 22 (001 L29355-29358): a TABLEM code the machine does not have
+NOT_AVAILABLE = "REQUESTED MISCELLANEOUS FUNCTION CODE IS NOT AVAILABLE ON THIS MACHINE"
 # non-motion blocks that may carry an option-98 F or an option-148 dwell (001 L9204-9258)
 NON_MOTION_DWELL = frozenset({Code.NONMOTION, Code.G_ONLY, Code.END})
 
@@ -200,6 +203,18 @@ class OutputElement:
         if pending is not ABSENT and pending != code:
             self.output(Block(Code.AUX_ONLY))
         self.state.pending.m_code = code
+
+    def store_cell(
+        self, cell: int, warn: Callable[[Diagnostic], None], where: SourcePosition | None
+    ) -> float | None:
+        """STOREM(cell): the machine's TABLEM(cell) waits for the next block; comment 22
+        (and None) when the machine has no such code."""
+        code = self.state.machine.m_code(cell)
+        if code is None:
+            warn(Diagnostic(NOT_AVAILABLE, where))
+            return None
+        self.store_m(code)
+        return code
 
     def _motion(self, block: Block) -> None:
         assert block.steps is not None

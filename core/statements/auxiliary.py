@@ -13,11 +13,10 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from gecent.core.cl.records import Statement
-from gecent.core.errors import Diagnostic, InputError
+from gecent.core.errors import InputError
 from gecent.core.output.block import Block, Code
 from gecent.core.output.marks import leader_block, stand_in
 from gecent.core.reinstate import COOLANT, StateVector
-from gecent.core.spindle import NOT_AVAILABLE
 
 if TYPE_CHECKING:
     from gecent.core.run import Run
@@ -63,7 +62,7 @@ def _stop(run: Run, statement: Statement, cell: int) -> None:
     stops spindle and coolant, so both are off afterwards (001 L37970-37991)."""
     if statement.args:
         raise InputError(f"{statement.major} takes no arguments", statement.where)
-    _code_by_itself(run, statement, cell, stop=True)
+    code_by_itself(run, statement, cell, stop=True)
     _spindle_and_coolant_off(run)
     run.state.modes.stopped = True
     run.state.conditions.respecified.clear()
@@ -87,16 +86,13 @@ def break_(run: Run, statement: Statement) -> None:
     _stop(run, statement, 2)
 
 
-def _code_by_itself(
+def code_by_itself(
     run: Run, statement: Statement, cell: int, kind: Code = Code.AUX_ONLY, stop: bool = False
 ) -> bool:
     """TABLEM(cell) in a block by itself, after any waiting M; comment 22 (and False) when
     the machine has no such code."""
-    code = run.machine.m_code(cell)
-    if code is None:
-        run.warn(Diagnostic(NOT_AVAILABLE, statement.where))
+    if run.output.store_cell(cell, run.warn, statement.where) is None:
         return False
-    run.output.store_m(code)
     block = Block(kind, statement.number)
     block.stop = stop
     run.output.output(block)
@@ -130,7 +126,7 @@ def end(run: Run, statement: Statement) -> None:
         raise InputError("END takes no arguments", statement.where)
     run.output.flush_m(statement.number)
     _dwell_with_t0(run, statement)
-    _code_by_itself(run, statement, 3, Code.END)
+    code_by_itself(run, statement, 3, Code.END)
     machine = run.machine
     leader = machine.number_option(168)
     if leader > 0:
@@ -173,7 +169,7 @@ def air(run: Run, statement: Statement) -> None:
     if len(statement.args) != 1 or words not in (["ON"], ["OFF"]):
         raise InputError("AIR expects AIR/ON or AIR/OFF", statement.where)
     run.output.flush_m(statement.number)
-    _code_by_itself(run, statement, 123 if words[0] == "ON" else 124)
+    code_by_itself(run, statement, 123 if words[0] == "ON" else 124)
 
 
 def rewind(run: Run, statement: Statement) -> None:
@@ -181,7 +177,7 @@ def rewind(run: Run, statement: Statement) -> None:
     itself; spindle and coolant are off (001 L35796-35848; DWELL(92) read as DWELL(97))."""
     run.output.flush_m(statement.number)
     _dwell_with_t0(run, statement)
-    if _code_by_itself(run, statement, 31):
+    if code_by_itself(run, statement, 31):
         _spindle_and_coolant_off(run)
 
 
@@ -214,11 +210,9 @@ def clamp(run: Run, statement: Statement) -> None:
             "CLAMP expects an object (XAXIS, TABLE, ...) and ON or OFF", statement.where
         )
     cells = CLAMP_CELLS[objects[0] if objects else "XAXIS"]
-    code = run.machine.m_code(cells[1] if switches == ["OFF"] else cells[0])
-    if code is None:
-        run.warn(Diagnostic(NOT_AVAILABLE, statement.where))
+    cell = cells[1] if switches == ["OFF"] else cells[0]
+    if run.output.store_cell(cell, run.warn, statement.where) is None:
         return
-    run.output.store_m(code)
     seconds = run.machine.number_option(76)
     if seconds > 0 and cells[0] < 100:
         block = run.output.dwell(seconds)

@@ -8,13 +8,13 @@ from typing import TYPE_CHECKING
 
 from gecent.core.cl.records import Arg, Statement, Word
 from gecent.core.errors import Diagnostic, InputError, NotYetSupported
+from gecent.core.feed.rapid import feed_range_cell
 from gecent.core.reinstate import FEED_M
-from gecent.core.spindle import NOT_AVAILABLE, assumed_speed
+from gecent.core.spindle import assumed_speed
 
 _FEED_UNITS = ("IPM", "MMPM", "IPR", "MMPR")
 # FEDRAT/...,RANGE,LOW|MEDIUM|HIGH: the manual scans for the three words, then for a number
 _RANGE_WORDS = {"LOW": 1, "MEDIUM": 2, "HIGH": 3}
-_FIRST_RANGE_CELL = 113  # TABLEM(112 + r) is feed range r's M code (001 L23541-23576)
 RANGE_ASSUMED = "OPTION FEED RATE RANGE ASSUMED."  # 001 L31199-31200
 RANGE_NOT_AVAILABLE = "RANGE REQUESTED IS NOT AVAILABLE, USE HIGHEST"  # SPINDL's, 001 L37617
 
@@ -141,12 +141,10 @@ def _select_range(run: Run, requested: int | None, statement: Statement) -> None
     if requested == feed.range:
         return
     feed.range = requested
-    code = machine.m_code(_FIRST_RANGE_CELL + requested - 1)
-    if code is None:
-        run.warn(Diagnostic(NOT_AVAILABLE, statement.where))
-        return
     output = run.output
-    output.store_m(code)
+    code = output.store_cell(feed_range_cell(requested), run.warn, statement.where)
+    if code is None:
+        return
     run.state.remember(FEED_M, code)
     seconds = machine.number_option(93)
     if seconds < 0:

@@ -10,9 +10,8 @@ from collections.abc import Callable
 from typing import TYPE_CHECKING
 
 from gecent.core.cl.records import Statement, Word
-from gecent.core.errors import Diagnostic, InputError, NotYetSupported
-from gecent.core.output.block import Block, Code
-from gecent.core.spindle import NOT_AVAILABLE
+from gecent.core.errors import InputError, NotYetSupported
+from gecent.core.statements.auxiliary import code_by_itself
 
 if TYPE_CHECKING:
     from gecent.core.run import Run
@@ -43,7 +42,7 @@ def _feed_override(run: Run, statement: Statement) -> None:
     rest = statement.args[1:]
     if len(rest) != 1 or not isinstance(rest[0], Word) or rest[0].name not in ("ON", "OFF"):
         raise InputError("SELECT/FEDOVR expects ON or OFF", statement.where)
-    _code_by_itself(run, statement, FEED_OVERRIDE_CELLS[rest[0].name])
+    code_by_itself(run, statement, FEED_OVERRIDE_CELLS[rest[0].name])
 
 
 def _numbered(cell: int, minor: str) -> Callable[[Run, Statement], None]:
@@ -54,20 +53,9 @@ def _numbered(cell: int, minor: str) -> Callable[[Run, Statement], None]:
         rest = statement.args[1:]
         if len(rest) > 1 or any(isinstance(a, Word) or a < 1 or a != int(a) for a in rest):
             raise InputError(f"SELECT/{minor} expects a {minor.lower()} number", statement.where)
-        _code_by_itself(run, statement, cell)
+        code_by_itself(run, statement, cell)
 
     return handler
-
-
-def _code_by_itself(run: Run, statement: Statement, cell: int) -> None:
-    """TABLEM(cell) in a block by itself (STOREM, then OUTPUT with CODE -1); comment 22
-    when the machine has no such code."""
-    code = run.machine.m_code(cell)
-    if code is None:
-        run.warn(Diagnostic(NOT_AVAILABLE, statement.where))
-        return
-    run.output.store_m(code)
-    run.output.output(Block(Code.AUX_ONLY, statement.number))
 
 
 _MINORS: dict[str, Callable[[Run, Statement], None]] = {
