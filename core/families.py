@@ -8,6 +8,7 @@ family                    hook                       selected by
 machines                  register_machines          MACHIN/GECENT,n or --machine
 spindle types             register_spindle_types     option 19
 positioning feed types    register_feed_types        option 78
+rotary feed types         register_rotary_feed_types option 141
 transform classes         register_transform_classes option 116
 printouts                 register_printouts         option 164
 MACFUN                    register_macfuns           option 133 and the machine
@@ -46,6 +47,9 @@ FAMILIES: tuple[FamilySpec, ...] = (
     FamilySpec("machines", "register_machines", "name"),
     FamilySpec("spindles", "register_spindle_types", "number", option=19, numbers=range(0, 20)),
     FamilySpec("feedtypes", "register_feed_types", "number", option=78, numbers=range(0, 10)),
+    FamilySpec(
+        "rotaryfeeds", "register_rotary_feed_types", "number", option=141, numbers=range(1, 2)
+    ),
     FamilySpec("classes", "register_transform_classes", "number", option=116, numbers=range(1, 10)),
     FamilySpec("printouts", "register_printouts", "number", option=164, numbers=range(1, 5)),
     FamilySpec("macfuns", "register_macfuns", "name"),

@@ -44,6 +44,11 @@ def register_feed_types(register: Register) -> None:
 
 
 @hookspec
+def register_rotary_feed_types(register: Register) -> None:
+    """Register positioning rotary feed types selected by option 141 (``NumberedPlugin``)."""
+
+
+@hookspec
 def register_transform_classes(register: Register) -> None:
     """Register multiaxis transform classes selected by option 116 (``NumberedPlugin``)."""
 

@@ -35,6 +35,7 @@ from gecent.core.errors import (
     RunStopped,
     SourcePosition,
 )
+from gecent.core.families import HookPoint, Macfun, MacfunHandler
 from gecent.core.feed.rapid import MODAL, RapidTraverse
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.machine.selection import (
@@ -133,7 +134,11 @@ class Run:
         if self._spindle is None:
             plugins = self.plugins or get_plugins()
             self._spindle = SpindleElement(
-                self.state, self.output, lambda n: plugins.get("spindles", n), self.warn
+                self.state,
+                self.output,
+                lambda n: plugins.get("spindles", n),
+                self.warn,
+                lambda point: macfun_handler(plugins, self.machine, point),
             )
         return self._spindle
 
@@ -339,6 +344,19 @@ class Run:
             tolerances.cutter_radius = record.values[0] / 2
             corner = record.values[1] if len(record.values) > 1 else 0.0
             tolerances.ball = abs(corner - tolerances.cutter_radius) < 1e-6
+
+
+def macfun_handler(
+    plugins: PluginSet, machine: MachineDefinition, point: HookPoint
+) -> MacfunHandler | None:
+    """The machine's own MACFUN code for a hook point (option 133 = 1), or None."""
+    if machine.number_option(133) != 1:
+        return None
+    for info in plugins.family("macfuns").values():
+        macfun: Macfun = info.obj
+        if macfun.machine == machine.name and point in macfun.handlers:
+            return macfun.handlers[point]
+    return None
 
 
 AFTER_END = "END OR RESET HAS NOT BEEN FOLLOWED BY A FROM POINT."  # comment 47 (L34080)

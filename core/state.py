@@ -50,6 +50,7 @@ class Spindle:
     direction: int = 0
     on: bool = False
     range: int = 1
+    range_code: float | None = None  # the last range (or mode) M code output
 
 
 @dataclass(slots=True)

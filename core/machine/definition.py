@@ -53,6 +53,8 @@ class MachineDefinition:
     feed_ranges: tuple[tuple[float, float], ...]
     output_order: tuple[int, ...] | None
     warnings: tuple[str, ...] = field(default=())
+    # the positioning feed table (FRTAB rows 0.., option 62 ranges x option 63 feeds)
+    feed_table: tuple[float, ...] = field(default=())
 
     @property
     def registers(self) -> RegisterSet:
@@ -85,6 +87,12 @@ class MachineDefinition:
     def spindle_speeds(self) -> tuple[float, ...]:
         """The speed table SRTAB(1 .. option 7 x option 8)."""
         return tuple(float(v) for v in self.store[1 : self.speed_count + 1] if v is not ABSENT)
+
+    def feed_table_ranges(self) -> tuple[tuple[float, ...], ...]:
+        """The positioning feed table by range: option 62 ranges of option 63 feeds."""
+        per_range = max(1, int(self.number_option(63)))
+        table = self.feed_table
+        return tuple(table[i : i + per_range] for i in range(0, len(table), per_range))
 
     def spindle_ranges(self) -> tuple[tuple[float, ...], ...]:
         per_range = int(self.number_option(8))

@@ -177,7 +177,7 @@ def _store(
     base: MachineDefinition | None,
     options: tuple[OptionValue, ...],
     problems: _Problems,
-) -> tuple[tuple[float | Absent, ...], tuple[tuple[float, float], ...], int]:
+) -> tuple[tuple[float | Absent, ...], tuple[tuple[float, float], ...], int, tuple[float, ...]]:
     store: list[float | Absent] = [ABSENT] * (STORE_SIZE + 1)
     feed_ranges: tuple[tuple[float, float], ...] = ()
     srtab_top = 0
@@ -204,6 +204,13 @@ def _store(
                 srtab_top = max(srtab_top, index)
     if file.feed_ranges is not None:
         feed_ranges = tuple((float(lo), float(hi)) for lo, hi in file.feed_ranges.ranges)
+    feeds = base.feed_table if base is not None else ()
+    if file.feed_table is not None:
+        feeds = tuple(float(v) for v in file.feed_table.feeds)
+        if file.feed_ranges is None:
+            feed_ranges = ()  # one FRTAB: the discrete table replaces inherited range limits
+    elif file.feed_ranges is not None:
+        feeds = ()
     size = options[174]
     if isinstance(size, float) and size == int(size) and 0 <= size <= STORE_SIZE:
         indfr = STORE_SIZE - int(size)
@@ -220,7 +227,11 @@ def _store(
             for offset, value in ((2 * r - 1, low), (2 * r, high)):
                 if indfr + offset <= STORE_SIZE:
                     store[indfr + offset] = value
-    return tuple(store), feed_ranges, srtab_top
+        if feeds and not feed_ranges:
+            # the positioning feed table, FRTAB row r at cell INDFR + 1 + r (001 L27010-27065)
+            for row, value in enumerate(feeds[: STORE_SIZE - indfr]):
+                store[indfr + 1 + row] = float(value)
+    return tuple(store), feed_ranges, srtab_top, feeds
 
 
 def build_definition(
@@ -260,7 +271,7 @@ def build_definition(
             continue
         heads.append(_head(section, head1, number, problems))
     options = _options(file.optab, option_base, problems)
-    store, feed_ranges, srtab_top = _store(file, base, options, problems)
+    store, feed_ranges, srtab_top, feed_table = _store(file, base, options, problems)
     order = (
         tuple(file.output_order.iorder)
         if file.output_order
@@ -283,6 +294,7 @@ def build_definition(
         srtab_top=srtab_top,
         feed_ranges=feed_ranges,
         output_order=order,
+        feed_table=feed_table,
     )
     problems.raise_if_any()
     errors, warnings = check_definition(definition)

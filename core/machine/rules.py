@@ -109,6 +109,9 @@ def _spindle_table(machine: MachineDefinition) -> Iterator[Problem]:
 def _feed_table(machine: MachineDefinition) -> Iterator[Problem]:
     ranges = machine.feed_ranges
     size = int(_number(machine, 174))
+    if machine.feed_table:
+        yield from _positioning_feed_table(machine, size)
+        return
     per_axis = _number(machine, 25) < 0
     if per_axis:
         axes = f"{int(_number(machine, 22)):03d}".count("1")
@@ -130,6 +133,28 @@ def _feed_table(machine: MachineDefinition) -> Iterator[Problem]:
             yield "feed_ranges", f"ranges.{number}", f"minimum {low} must be 0..maximum {high}"
     if not per_axis and any(b[1] < a[1] for a, b in pairwise(ranges)):
         yield "feed_ranges", "ranges", "feed ranges must be in ascending order of range"
+
+
+def _positioning_feed_table(machine: MachineDefinition, size: int) -> Iterator[Problem]:
+    """The discrete feeds of the positioning feed types (001 L11198-11236, L27010-27065)."""
+    feeds = machine.feed_table
+    if machine.feed_ranges:
+        yield (
+            "feed_table",
+            "feeds",
+            "FRTAB holds either feed-range limits or a feed table, not both",
+        )
+    count = int(_number(machine, 62)) * int(_number(machine, 63))
+    if len(feeds) != count:
+        yield (
+            "feed_table",
+            "feeds",
+            f"option 62 x option 63 = {count} feeds, but the table lists {len(feeds)}",
+        )
+    if size != len(feeds):
+        yield "optab", 174, f"FRTAB size must be the {len(feeds)} feeds of the table; found {size}"
+    if any(v < 0 for v in feeds):
+        yield "feed_table", "feeds", "feeds must not be negative"
 
 
 def _code_tables(machine: MachineDefinition) -> Iterator[Problem]:

@@ -23,6 +23,8 @@ Machine Subroutines did (§5.6.6)::
     cells = { 180 = 9.0 }
     [feed_ranges]               # FRTAB, [min, max] per range, stored from the top of the store
     ranges = [[0.1, 10.0], [7.0, 60.0]]
+    [feed_table]                # FRTAB, positioning discrete feeds (option 62 x 63), from the top
+    feeds = [0.01, 0.02, 0.03]
     [output_order]              # IORDER: output position of each register location
     iorder = [1, 2, 3, 5, 7, 11, 12, 4, 6, 8, 9, 10, 13, 14]
     [heads.2]                   # multihead: head 2's REGSTR/REGFOR (start from head 1's)
@@ -56,6 +58,10 @@ class FeedRangesSection(_Section):
     ranges: list[tuple[float, float]] = Field(default_factory=list)
 
 
+class FeedTableSection(_Section):
+    feeds: list[float] = Field(default_factory=list)
+
+
 class OutputOrderSection(_Section):
     iorder: list[int]
 
@@ -74,5 +80,6 @@ class MachineFile(_Section):
     optab: dict[str, float | str] = Field(default_factory=dict)
     spindle_table: SpindleTableSection | None = None
     feed_ranges: FeedRangesSection | None = None
+    feed_table: FeedTableSection | None = None
     output_order: OutputOrderSection | None = None
     heads: dict[int, HeadSection] = Field(default_factory=dict)

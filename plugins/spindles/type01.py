@@ -15,7 +15,7 @@ from gecent.core.errors import MachineDefinitionError
 from gecent.core.feed.magic3 import magic3
 from gecent.core.hookspecs import Register, hookimpl
 from gecent.core.machine.definition import MachineDefinition
-from gecent.core.spindle import Running, SpindleSelection, limited
+from gecent.core.spindle import SpindleRequest, SpindleSelection, limited
 
 
 @dataclass(frozen=True)
@@ -36,15 +36,20 @@ class EiaThreeDigitSpindle:
             )
         return speeds[0], speeds[1]
 
-    def select(
-        self,
-        machine: MachineDefinition,
-        speed: float,
-        requested_range: int | None,
-        running: Running | None = None,
-    ) -> SpindleSelection:
+    def range_count(self, machine: MachineDefinition) -> int:
+        return 1
+
+    def speed_limits(self, machine: MachineDefinition, range_number: int) -> tuple[float, float]:
+        return self.limits(machine)
+
+    def table_speeds(
+        self, machine: MachineDefinition, range_number: int
+    ) -> tuple[float, ...] | None:
+        return None  # variable: SFM steps by option 15
+
+    def select(self, machine: MachineDefinition, request: SpindleRequest) -> SpindleSelection:
         low, high = self.limits(machine)
-        speed, comments = limited(speed, low, high)
+        speed, comments = limited(request.speed, low, high)
         code = magic3(speed)
         assert code is not None  # the limits keep the speed within magic three's range
         return SpindleSelection(speed, float(code), 1, comments)

@@ -17,7 +17,15 @@ from gecent.core.errors import MachineDefinitionError
 from gecent.core.feed.magic3 import magic3
 from gecent.core.hookspecs import Register, hookimpl
 from gecent.core.machine.definition import MachineDefinition
-from gecent.core.spindle import CCLW, CLW, Running, SpindleSelection, limited, lowest_range
+from gecent.core.spindle import (
+    CCLW,
+    CLW,
+    SpindleRequest,
+    SpindleSelection,
+    SpindleStep,
+    limited,
+    range_for,
+)
 
 SHIFT_DWELL = 6.0  # seconds, fixed by the manual (001 L15092-15097)
 
@@ -33,6 +41,7 @@ class VariableRangeSpindle:
     number: int = 10
     name: str = "variable speed with range and direction M code"
     section: str = "§4.5.11"
+    own_dwells: bool = True  # its shift dwell is fixed at 6 s; option 54 is not used
 
     def ranges(self, machine: MachineDefinition) -> tuple[tuple[float, float], ...]:
         ranges = machine.spindle_ranges()
@@ -50,28 +59,34 @@ class VariableRangeSpindle:
             )
         return tuple((r[0], r[1]) for r in ranges)
 
-    def select(
-        self,
-        machine: MachineDefinition,
-        speed: float,
-        requested_range: int | None,
-        running: Running | None = None,
-    ) -> SpindleSelection:
+    def range_count(self, machine: MachineDefinition) -> int:
+        return len(self.ranges(machine))
+
+    def speed_limits(self, machine: MachineDefinition, range_number: int) -> tuple[float, float]:
+        return self.ranges(machine)[range_number - 1]
+
+    def table_speeds(
+        self, machine: MachineDefinition, range_number: int
+    ) -> tuple[float, ...] | None:
+        return None  # variable: SFM steps by option 15
+
+    def select(self, machine: MachineDefinition, request: SpindleRequest) -> SpindleSelection:
         ranges = self.ranges(machine)
-        number = requested_range or lowest_range(ranges, speed)
-        if number is None:  # outside every range: the nearer end of the table
-            number = 1 if speed < ranges[0][0] else len(ranges)
+        number = range_for(ranges, request.speed, request.range)
         low, high = ranges[number - 1]
-        speed, comments = limited(speed, low, high)
+        speed, comments = limited(request.speed, low, high)
+        running = request.running
         cells = {CLW: 70 + 2 * number, CCLW: 69 + 2 * number}
-        shift = None
+        steps: tuple[SpindleStep, ...] = ()
         fraction = abs(machine.number_option(137))
         if machine.number_option(137) < 0 and running is not None and running.range != number:
             fraction = fraction if fraction <= 1 else fraction / 100  # "percent" in the text
             shift_speed = fraction * ranges[running.range - 1][1]
             if running.speed > shift_speed:
-                shift = (_code(shift_speed), SHIFT_DWELL)
-        return SpindleSelection(speed, _code(speed), number, comments, cells, shift)
+                steps = (SpindleStep(_code(shift_speed), running.range, SHIFT_DWELL),)
+        return SpindleSelection(
+            speed, _code(speed), number, comments, direction_cells=cells, steps=steps
+        )
 
 
 @hookimpl
