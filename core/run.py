@@ -36,6 +36,7 @@ from gecent.core.errors import (
     SourcePosition,
 )
 from gecent.core.families import HookPoint, Macfun, MacfunHandler
+from gecent.core.feed.positioning import FeedType
 from gecent.core.feed.rapid import MODAL, RapidTraverse
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.machine.selection import (
@@ -45,6 +46,7 @@ from gecent.core.machine.selection import (
 from gecent.core.motion.circle import CircularMotion
 from gecent.core.motion.cycles import Cycle, cycle_legs
 from gecent.core.motion.linear import LinearMotion, godlta_delta
+from gecent.core.motion.positioning import PositioningMotion
 from gecent.core.motion.rotary import RotaryElement
 from gecent.core.motion.thread import ThreadElement
 from gecent.core.output.block import Block, Code
@@ -93,6 +95,7 @@ class Run:
         self._tool_element: ToolElement | None = None
         self._rotary: RotaryElement | None = None
         self._thread: ThreadElement | None = None
+        self._positioning: PositioningMotion | None = None
         self.cycle: Cycle | None = None  # the canned cycle in force (CYCFLG, ICYTYP)
         self.cycle_first_z: float | None = None
         self._statements = handlers()
@@ -106,7 +109,27 @@ class Run:
     def output(self) -> OutputElement:
         if self._output is None:
             self._output = OutputElement(self.state)
+            if self.machine.number_option(1) != 0:
+                self._output.positioning_feed = self.feed_type
         return self._output
+
+    @property
+    def feed_type(self) -> FeedType:
+        """The positioning feed type of option 78 (0 or negative: type 0)."""
+        number = max(0, int(self.machine.number_option(78)))
+        plugins = self.plugins or get_plugins()
+        found = plugins.get("feedtypes", number)
+        if found is None:
+            raise NotYetSupported(f"positioning feed type {number} (option 78): not installed")
+        return found  # type: ignore[no-any-return]
+
+    @property
+    def positioning(self) -> PositioningMotion:
+        if self._positioning is None:
+            self._positioning = PositioningMotion(
+                self.state, self.output.output, self.warn, self.rapid.motion
+            )
+        return self._positioning
 
     @property
     def motion(self) -> LinearMotion:
@@ -248,11 +271,10 @@ class Run:
             self.warn(Diagnostic(note.text, note.where or record.where))
 
     def _motion_record(self, record: Motion) -> None:
-        if self.machine.number_option(1) != 0:
-            raise NotYetSupported(
-                f"motion on a positioning machine (option 1 = {self.machine.number_option(1):g})",
-                record.where,
-            )
+        control = self.machine.number_option(1)
+        if control not in (0.0, 1.0, 2.0, -1.0):  # 3: the 7500's mixed control
+            raise NotYetSupported(f"motion with option 1 = {control:g}", record.where)
+        positioning = control != 0
         if len(record.points[0]) == 6:
             raise NotYetSupported("multiaxis motion", record.where)
         modes = self.state.modes
@@ -262,6 +284,11 @@ class Run:
                 self.warn(Diagnostic(AFTER_END, record.where))
         if modes.stopped and record.subtype is not MotionSubtype.FROM:
             restat(self, record.number)
+        if positioning:
+            if self.state.threading.armed:
+                raise NotYetSupported("THREAD on a positioning machine", record.where)
+            self.positioning.record(record, self.cycle)
+            return
         if self.cycle is not None and record.subtype is not MotionSubtype.FROM:
             self._cycle_points(record)
             return

@@ -13,8 +13,12 @@ docs/research/spindle-tool.md and docs/research/lathe-tools.md.
   (default t) and offset k into T by option 96's layout (COMTAT); FRONT and REAR select the
   turret (TABLEM 29, 30), the index itself is TABLEM(8).
 
-Tool-length corrections (LENGTH, ADJUST), turret corrective moves (NOW, NEXT) and
-positioning machines are not built and stop the run with an error naming them.
+On a positioning machine (TOOLGP) the T goes out at once with the cycle-off G code TABLEG(1)
+in a CODE -1 block, and the output adds the spindle command to it (option 1 = 1).
+
+Tool-length corrections (LENGTH, ADJUST), turret corrective moves (NOW, NEXT), TURRET on
+a positioning machine and T merged into the next motion block (option 1 = 2) are not built
+and stop the run with an error naming them.
 """
 
 from __future__ import annotations
@@ -23,6 +27,7 @@ from collections.abc import Callable
 
 from gecent.core.cl.records import Statement, Word
 from gecent.core.errors import Diagnostic, InputError, NotYetSupported, SourcePosition
+from gecent.core.output.block import Block, Code
 from gecent.core.output.element import OutputElement
 from gecent.core.reinstate import T_CODE
 from gecent.core.state import PostState
@@ -88,8 +93,10 @@ class ToolElement:
                 )
         if "CLW" in words and "CCLW" in words:
             raise InputError(f"{statement.major} takes one of CLW and CCLW", where)
-        if machine.number_option(1) != 0:
-            raise NotYetSupported(f"{statement.major} on a positioning machine (TOOLGP)", where)
+        if machine.number_option(1) != 0 and positions > 1:
+            raise NotYetSupported(f"{statement.major} on a positioning machine", where)
+        if machine.number_option(1) == 2:
+            raise NotYetSupported("T merged into the following motion block (option 1 = 2)", where)
         numbers = _plain_numbers(statement)
         offset = _offset(statement)
         if not 1 <= len(numbers) <= positions or any(n < 0 or n != int(n) for n in numbers):
@@ -140,7 +147,15 @@ class ToolElement:
         if direction is not None:
             self._store(direction, statement.where)
         self.position = station
-        if has_t:
+        if has_t and machine.number_option(1) != 0:
+            # TOOLGP: the cycle-off G code and the T in a CODE -1 block (001 L38648-38692)
+            block = Block(Code.AUX_ONLY, statement.number)
+            cycle_off = machine.g_code(1)
+            if cycle_off is not None:
+                block.cells[2] = float(cycle_off)
+            block.cells[13] = t_code
+            self.output.output(block)
+        elif has_t:
             block = self.output.dwell(machine.number_option(83))
             block.record = statement.number
             block.cells[13] = t_code

@@ -13,15 +13,17 @@ from collections.abc import Callable
 from math import asin, pi, radians
 
 from gecent.core.absent import ABSENT, Absent
-from gecent.core.errors import Diagnostic, SourcePosition
+from gecent.core.errors import Diagnostic, InputError, SourcePosition
 from gecent.core.feed.contour import FeedCommand, RapidCommand
 from gecent.core.feed.optimise import FeedOptimiser
+from gecent.core.feed.positioning import XY, FeedContext, FeedType, Z
 from gecent.core.motion.gcode import CircularCodes, DimensionCode, LinearCodes, RotaryCodes
 from gecent.core.motion.limits import SlideLimits
 from gecent.core.motion.rotary import UNITS_PER_DEGREE
 from gecent.core.output.block import Block, Code
 from gecent.core.output.marks import stand_in
 from gecent.core.output.words import WordFormatter
+from gecent.core.reinstate import SPINDLE_COMMAND
 from gecent.core.state import PostState
 
 CIRCLE_CODES = frozenset(
@@ -35,6 +37,7 @@ CIRCLE_CODES = frozenset(
     }
 )
 MOTION_CODES = frozenset({Code.LINEAR}) | CIRCLE_CODES
+POSITION_CODES = frozenset({Code.POSITION_XY, Code.POSITION_Z})
 THREAD_CODES = frozenset({Code.THREAD_5, Code.THREAD_6})
 # blocks whose cells 3..10 are registers already, not internal axes for SHUFFL
 UNSHUFFLED = frozenset({Code.DWELL})
@@ -79,6 +82,11 @@ class OutputElement:
         self.emitted: list[Block] = []
         self.diagnostics: list[Diagnostic] = []
         self._assumed_feed = False
+        # a positioning machine's feed type (option 78), set by the run; CYCLE/MILL in force
+        self.positioning_feed: FeedType | None = None
+        self.milling = False
+        # option 1 = 1: a positioning block with a T repeats the spindle command (-1: not)
+        self.merge_s_with_t = machine.number_option(1) == 1
 
     # -- OUTPUT (flow chart 8) ------------------------------------------------------------
 
@@ -104,6 +112,8 @@ class OutputElement:
         block.cells[1] = self._sequence_number(block)
         if block.code in MOTION_CODES:
             self._motion(block)
+        elif block.code in POSITION_CODES:
+            self._position(block)
         elif block.code is Code.ROTARY_INCREMENTAL:
             self._rotary(block)
         elif block.code in THREAD_CODES:
@@ -115,6 +125,15 @@ class OutputElement:
                 block.cells[2] = self.fill_g
         if block.dwell_minutes:
             self.dwell_minutes += block.dwell_minutes
+        if (
+            self.merge_s_with_t
+            and block.cells[13] is not ABSENT
+            and state.pending.spindle is ABSENT
+        ):
+            # a tool change keeps its speed: the spindle command rides with the T (001 L1165)
+            command = state.conditions.values.get(SPINDLE_COMMAND)
+            if command is not None and command >= 0:
+                state.pending.spindle = command
         block.cells[12] = state.pending.spindle
         block.cells[14] = state.pending.m_code
         state.pending.spindle = ABSENT
@@ -265,6 +284,38 @@ class OutputElement:
             block.cut_minutes = length / ipm
         self.cut_minutes += block.cut_minutes
 
+    def _position(self, block: Block) -> None:
+        """POSIT and POSFED (001 L34780-34878): an absolute positioning block's F command
+        from the feed type, or the rapid marker: option 45's command (none when negative)
+        at the rapid rate."""
+        assert block.steps is not None and block.position is not None
+        if self.slide_limits.limits:
+            self.diagnostics.extend(self.slide_limits.test(block.position))
+        length = sum((s * self.step) ** 2 for s in block.steps) ** 0.5
+        feed = self.state.feed
+        if block.rapid:
+            limit = self.state.machine.number_option(45)
+            block.cells[11] = limit if limit >= 0 else ABSENT
+            ipm = abs(feed.rapid_ipm)
+        else:
+            assert self.positioning_feed is not None
+            self._check_feed()
+            spindle = self.state.spindle
+            context = FeedContext(
+                spindle.speed,
+                spindle.range,
+                feed.range,
+                self.milling,
+                Z if block.code is Code.POSITION_Z else XY,
+            )
+            command = self.positioning_feed.command(self.state.machine, feed.ipm, context)
+            self.diagnostics.extend(Diagnostic(text) for text in command.comments)
+            block.cells[11] = command.command
+            ipm = command.ipm
+        block.cells[19] = ipm
+        block.cut_minutes = length / ipm if ipm > 0 else 0.0
+        self.cut_minutes += block.cut_minutes
+
     def _thread(self, block: Block) -> None:
         """A thread block comes finished from THREDO: no CONTUR, the lead and G are set;
         the F register the control may have held is overwritten by a threading rate."""
@@ -279,9 +330,16 @@ class OutputElement:
         (001 L34083, L24674-24679)."""
         feed = self.state.feed
         if feed.programmed is None and not self._assumed_feed:
+            assumed = self.state.machine.number_option(23)
+            if assumed <= 0:
+                raise InputError(
+                    f"a feed move before any FEDRAT, and option 23 = {assumed:g} assumes no "
+                    "feedrate (processing stops)",
+                    SourcePosition("", None, None, self.state.sequence),
+                )
             self._assumed_feed = True
             self.diagnostics.append(Diagnostic("OPTION FEEDRATE ASSUMED."))
-            feed.ipm = self.state.machine.number_option(23)
+            feed.ipm = assumed
 
     def _rotary(self, block: Block) -> None:
         """An incremental rotary block: SELGRO's G code, and the feed over the arc the part
@@ -313,8 +371,17 @@ class OutputElement:
             return
         if block.code not in UNSHUFFLED:
             self.words.shuffle_block(block)
-        motion = block.code in MOTION_CODES or block.code is Code.ROTARY_INCREMENTAL
-        words = self.words.words(block, suppress=motion, sequence=self.state.sequence)
+        motion = (
+            block.code in MOTION_CODES
+            or block.code in POSITION_CODES
+            or block.code is Code.ROTARY_INCREMENTAL
+        )
+        words = self.words.words(
+            block,
+            suppress=motion,
+            sequence=self.state.sequence,
+            absolute=block.code in POSITION_CODES,
+        )
         if not motion and block.cells[2] is not ABSENT:
             self.words.previous_g = ABSENT  # a G04 or other G came between: repeat the motion G
         block.words = tuple((location, printed) for location, _, printed, _ in words)

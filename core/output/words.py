@@ -108,8 +108,12 @@ class WordFormatter:
                 cell, sign = target
                 cells[cell] = sign * float(value) if cell < 8 else float(value)
 
-    def words(self, block: Block, *, suppress: bool, sequence: int) -> list[Word]:
-        """(location, letter, printed, punched) of each register the block outputs."""
+    def words(
+        self, block: Block, *, suppress: bool, sequence: int, absolute: bool = False
+    ) -> list[Word]:
+        """(location, letter, printed, punched) of each register the block outputs. In an
+        absolute positioning block a zero X, Y, Z, A or B is a position, so option 51's
+        deletion of zero words (meant for departures) does not touch it."""
         words: list[Word] = []
         long_departure = (
             self.long_formatters
@@ -147,7 +151,11 @@ class WordFormatter:
                 record = block.record if block.record is not None else sequence
                 overflow.where = SourcePosition("", None, None, record)
                 raise
-            if location in ZERO_RULE_CELLS and text.punched.strip("+-0") == "":
+            if (
+                location in ZERO_RULE_CELLS
+                and not (absolute and location <= 7)
+                and text.punched.strip("+-0") == ""
+            ):
                 if self.zero_rule in (0, -2):  # delete value and address (standard)
                     continue
                 if self.zero_rule == 1:  # the address alone

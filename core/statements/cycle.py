@@ -1,7 +1,8 @@
-"""CYCLE and CYCLE/OFF on a contouring machine: the cycle is remembered and every later CL
-point is drilled by the expansion of core/motion/cycles.py (docs/research/cycles.md). A
-machine whose control has the cycle's own G code (TABLEG 82-88) would take the manual's
-control-cycle path, which is not built yet."""
+"""CYCLE and CYCLE/OFF. On a contouring machine the cycle is remembered and every later CL
+point is drilled by the expansion of core/motion/cycles.py (docs/research/cycles.md); a
+contouring machine whose control has the cycle's own G code (TABLEG 82-88) would take the
+control-cycle path, which is not built for contouring controls yet. On a positioning
+machine (option 1 = 1, 2) the control runs the cycle: core/motion/positioning.py (CYCLGP)."""
 
 from __future__ import annotations
 
@@ -23,12 +24,20 @@ def cycle(run: Run, statement: Statement) -> None:
     if feed.rapid_mode:
         run.rapid.leave()  # RAPIDX: a cycle ends rapid traverse (001 L30195-30197)
     feed.rapid_requested = False
+    machine = run.machine
+    positioning = machine.number_option(1) != 0
+    if positioning:
+        run.output.milling = parsed is not None and parsed.kind == "MILL"
     if parsed is None:
         run.cycle = None
         return
-    machine = run.machine
     cell = CYCLE_TYPES[parsed.kind][1]
-    if machine.number_option(1) != 0 or machine.g_code(cell) is not None:
+    if positioning and machine.g_code(cell) is None:
+        raise NotYetSupported(
+            f"CYCLE/{parsed.kind} on a positioning machine without its G code TABLEG({cell})",
+            statement.where,
+        )
+    if not positioning and machine.g_code(cell) is not None:
         raise NotYetSupported(
             f"CYCLE/{parsed.kind} by the control's own cycle (TABLEG({cell}), option 1)",
             statement.where,

@@ -18,7 +18,7 @@ from gecent.core.listing import environment
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.machine.shuffle import cell_map
 from gecent.core.output.block import TEXT_CODES, Block, Code
-from gecent.core.output.element import MOTION_CODES, THREAD_CODES
+from gecent.core.output.element import MOTION_CODES, POSITION_CODES, THREAD_CODES
 from gecent.core.output.format import NO_DECIMAL_POINT
 from gecent.core.output.marks import stand_in
 from gecent.core.output.tape import tape_feet, tape_lines
@@ -123,6 +123,7 @@ def _absolute(value: float, decimals: int) -> str:
 PRINTABLE = (
     MOTION_CODES
     | THREAD_CODES
+    | POSITION_CODES
     | {
         Code.FROM,
         Code.ROTARY_INCREMENTAL,

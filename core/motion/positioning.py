@@ -1,0 +1,230 @@
+"""Motion on a positioning machine (option 1 = 1 or 2; overlay GEPOS): POSMOV and the
+control's own canned cycles, CYCLGP (manual §2.4.1, 001 L1043-1178; flow chart 9,
+001 L19849-19935; POSMOV 001 L34934-34992; CYCLGP 001 L30095-30204; RAPIDP L35274-35313).
+
+Everything a positioning machine outputs is absolute:
+
+* each CL point plus TRANS (Z first moved by option 140) is rounded to whole steps and
+  output as a position, not a departure;
+* CODE +16 carries X and Y; Z follows option 130: 0 ignored, +1 a CODE -16 block of its own
+  after the XY block, -1 in the XY block; a coordinate that did not change is not output,
+  and under option 40 a repeated X or Y is left out of a block that moves the other;
+* with no cycle in force the block gets the cycle-off G code TABLEG(1); under a cycle, the
+  cycle's G code (TABLEG 82-88), so each XY position runs the control's cycle;
+* the F command is made at output by the positioning feed type (POSFED, option 78).
+
+A cycle is set up by one CODE -16 block: the cycle's G code, Z = the plunge and R = the
+distance at rapid, both measured down from the tool's height (CURNTZ). CL files give each
+hole's top and the cycle's DEPTH and CLEAR from it, so the block is made at the first hole
+and made again whenever a hole's top moves the plunge or the rapid distance. Without an R
+register (REGFOR(16) = 0) RAPIDP simulates it: the R distance is a rapid Z move in a block
+of its own, and the cycle block's Z is the rest of the plunge.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+from gecent.core.absent import ABSENT, Absent
+from gecent.core.cl.records import Motion, MotionSubtype
+from gecent.core.errors import Diagnostic, InputError, NotYetSupported
+from gecent.core.motion.cycles import CYCLE_TYPES, Cycle
+from gecent.core.motion.linear import godlta_delta
+from gecent.core.motion.rounding import to_steps
+from gecent.core.output.block import Block, Code
+from gecent.core.state import PostState
+
+NEGATIVE_Z = "Z IS BELOW ZERO AFTER THE OPTION 140 ADJUSTMENT"  # comment 66 (text lost)
+X, Y, Z = 0, 1, 2
+
+
+class PositioningMotion:
+    """POSMOV for a single-head positioning machine."""
+
+    def __init__(
+        self,
+        state: PostState,
+        emit: Callable[[Block], None],
+        warn: Callable[[Diagnostic], None],
+        rapid_motion: Callable[[float], None],
+    ) -> None:
+        machine = state.machine
+        self.state = state
+        self.emit = emit
+        self.warn = warn
+        self.rapid_motion = rapid_motion
+        self.step = machine.number_option(14)
+        self.z_mode = machine.number_option(130)
+        self.suppress_repeats = machine.number_option(40) == 1
+        self.inversion = machine.number_option(140)  # 0: no adjustment
+        if machine.number_option(86) < 0:
+            raise NotYetSupported("tool-length adjustment of positioning Z (option 86 < 0)")
+        cycle_off = machine.g_code(1)
+        self.cycle_off: float | Absent = ABSENT if cycle_off is None else float(cycle_off)
+        self.has_r_register = machine.registers.formats[16] is not None
+        # what the control holds: the last X and Y output, and the last cycle block
+        self.held: list[int | None] = [None, None, None]
+        self.cycle_block: tuple[float, int, int] | None = None
+
+    # -- records ---------------------------------------------------------------------------
+
+    def record(self, record: Motion, cycle: Cycle | None) -> None:
+        if record.subtype is MotionSubtype.FROM:
+            self._from(record)
+            return
+        if cycle is None:
+            self.cycle_block = None
+        for point in self._points(record):
+            if len(point) != 3:
+                raise InputError(
+                    "a multiaxis (6-value) point on a 3-axis positioning machine", record.where
+                )
+            if cycle is None:
+                self._move(record, point)
+            else:
+                self._hole(record, point, cycle)
+
+    def _points(self, record: Motion) -> list[tuple[float, ...]]:
+        if record.subtype is not MotionSubtype.GODLTA:
+            return list(record.points)
+        delta = godlta_delta(record.points[0])
+        previous = self.state.position.previous_part
+        tx, ty, tz = self.state.position.translation
+        return [tuple(previous[a] + delta[a] - (tx, ty, tz)[a] for a in range(3))]
+
+    def _machine_point(self, point: tuple[float, ...]) -> tuple[list[float], list[int]]:
+        tx, ty, tz = self.state.position.translation
+        part = [point[X] + tx, point[Y] + ty, point[Z] + tz]
+        if self.inversion:
+            part[Z] -= self.inversion  # "DATACL = DATACL - OPTAB(140)" (001 L19870-19876)
+            if part[Z] < 0:
+                self.warn(Diagnostic(NEGATIVE_Z, None))
+        return part, [to_steps(value, self.step) for value in part]
+
+    def _from(self, record: Motion) -> None:
+        position = self.state.position
+        part, steps = self._machine_point(record.points[0])
+        block = Block(Code.FROM, record.number)
+        for axis in range(3):
+            block.cells[3 + axis] = steps[axis] * self.step
+        block.position = tuple(steps)
+        self._arrive(part, steps)
+        position.from_given = True
+        self.emit(block)
+
+    def _arrive(self, part: list[float], steps: list[int]) -> None:
+        position = self.state.position
+        position.present_part[:3] = part
+        position.present[:3] = steps
+        position.previous_part[:] = position.present_part
+        position.previous[:] = position.present
+
+    # -- POSMOV ----------------------------------------------------------------------------
+
+    def _move(
+        self, record: Motion, point: tuple[float, ...], g_code: float | Absent = ABSENT
+    ) -> None:
+        """One positioning move, as option 130 splits it."""
+        part, steps = self._machine_point(point)
+        previous = self.state.position.previous
+        moved = [steps[a] != previous[a] for a in range(3)]
+        self._rapid_test([steps[a] - previous[a] for a in range(3)])
+        if g_code is ABSENT:
+            g_code = self.cycle_off
+        if self.z_mode < 0:
+            if any(moved):
+                self._block(record, Code.POSITION_XY, steps, (X, Y, Z), g_code)
+        else:
+            if moved[X] or moved[Y]:
+                self._block(record, Code.POSITION_XY, steps, (X, Y), g_code)
+            if self.z_mode > 0 and moved[Z]:
+                self._block(record, Code.POSITION_Z, steps, (Z,), g_code)
+        self._arrive(part, steps)
+
+    def _block(
+        self,
+        record: Motion,
+        code: Code,
+        target: list[int],
+        axes: tuple[int, ...],
+        g_code: float | Absent,
+    ) -> None:
+        previous = list(self.state.position.previous[:3])
+        reached = list(previous)
+        block = Block(code, record.number)
+        for axis in axes:
+            reached[axis] = target[axis]
+            repeated = self.held[axis] == target[axis]
+            if axis != Z and repeated and self.suppress_repeats:
+                continue  # POSIT, option 40 (001 L34842-34846)
+            if axis == Z and repeated:
+                continue
+            block.cells[3 + axis] = target[axis] * self.step
+            self.held[axis] = target[axis]
+        block.cells[2] = g_code
+        block.position = tuple(reached)
+        block.steps = tuple(reached[a] - previous[a] for a in range(3))
+        block.rapid = bool(self.state.feed.rapid_ipm)
+        self.state.position.previous[:3] = reached
+        self.emit(block)
+
+    def _rapid_test(self, departures: list[int]) -> None:
+        """TSTFLG: RAPIDO or RAPIDX once per CL point, over the whole move."""
+        feed = self.state.feed
+        if feed.rapid_requested or feed.rapid_mode:
+            self.rapid_motion(sum((d * self.step) ** 2 for d in departures) ** 0.5)
+
+    # -- CYCLGP ----------------------------------------------------------------------------
+
+    def _hole(self, record: Motion, point: tuple[float, ...], cycle: Cycle) -> None:
+        """One hole under the control's cycle: the cycle block when the plunge or the rapid
+        distance changes, then the XY position that runs it. The tool stays at its height."""
+        height = self.state.position.previous_part[Z]
+        tz = self.state.position.translation[Z]
+        top = point[Z] + tz - self.inversion
+        rapid_level = top + cycle.clearance - cycle.rapto
+        bottom = top - cycle.depth
+        plunge = to_steps(height - bottom, self.step) * self.step
+        rapid_distance = to_steps(height - rapid_level, self.step) * self.step
+        if plunge <= 0 or rapid_distance < 0 or rapid_distance > plunge:
+            raise InputError(
+                f"CYCLE/{cycle.kind}: the tool at Z {height:g} is not above the hole's "
+                f"clearance level {rapid_level:g} and bottom {bottom:g}",
+                record.where,
+            )
+        g_code = self._cycle_g(cycle, record)
+        if not self.has_r_register and rapid_distance > 0:
+            # RAPIDP: R as a rapid Z move in a block of its own; the cycle plunges the rest
+            self.state.feed.rapid_requested = True
+            tx, ty, tz = self.state.position.translation
+            at = self.state.position.previous_part
+            lowered = (at[X] - tx, at[Y] - ty, at[Z] - rapid_distance - tz + self.inversion)
+            part, steps = self._machine_point(lowered)
+            previous = self.state.position.previous
+            self._rapid_test([steps[a] - previous[a] for a in range(3)])
+            self._block(record, Code.POSITION_Z, steps, (Z,), self.cycle_off)
+            self._arrive(part, steps)
+            height, plunge, rapid_distance = part[Z], plunge - rapid_distance, 0.0
+        wanted = (g_code, to_steps(plunge, self.step), to_steps(rapid_distance, self.step))
+        if wanted != self.cycle_block:
+            self.cycle_block = wanted
+            block = Block(Code.POSITION_Z, record.number)
+            block.cells[2] = g_code
+            block.cells[5] = wanted[1] * self.step
+            if self.has_r_register:
+                block.cells[16] = wanted[2] * self.step
+            block.position = tuple(self.state.position.previous[:3])
+            block.steps = (0, 0, 0)
+            self.emit(block)
+        tz = self.state.position.translation[Z]
+        self._move(record, (point[X], point[Y], height - tz + self.inversion), g_code)
+
+    def _cycle_g(self, cycle: Cycle, record: Motion) -> float:
+        cell = CYCLE_TYPES[cycle.kind][1]
+        code = self.state.machine.g_code(cell)
+        if code is None:
+            raise NotYetSupported(
+                f"CYCLE/{cycle.kind} on a positioning machine without its G code TABLEG({cell})",
+                record.where,
+            )
+        return float(code)
