@@ -20,6 +20,9 @@ Problem = tuple[str, str | int | None, str]
 # (commands, factors or generation parameters after it; manual §4.5.11, .13, .15, .16,
 # .18), and type 7 whose layout belongs to the machine's own MACFUN code.
 SRTAB_EXTENDED_TYPES = frozenset({7, 11, 13, 15, 16, 18})
+# types whose SRTAB holds the parameters the speeds are generated from, not the speeds:
+# type 18's highest speed and change between speeds per range (manual §4.5.19)
+GENERATED_TABLE_TYPES = frozenset({18})
 
 # Allowed values of the options that select modules or encodings.
 _CHOICES: dict[int, tuple[set[float], str]] = {
@@ -58,7 +61,7 @@ def _option_values(machine: MachineDefinition) -> Iterator[Problem]:
         value = machine.options[number]
         if not _whole(value) or not low <= float(value) <= high:
             yield "optab", number, f"{what} must be a whole number {low}..{high}; found {value!r}"
-    if _whole(machine.options[174]) and int(_number(machine, 174)) % 2:
+    if not machine.feed_table and _whole(machine.options[174]) and int(_number(machine, 174)) % 2:
         yield "optab", 174, "FRTAB size must be even (a minimum and a maximum per range)"
     if _number(machine, 14) <= 0:
         yield "optab", 14, "step size must be greater than 0"
@@ -77,6 +80,18 @@ def _option_values(machine: MachineDefinition) -> Iterator[Problem]:
 def _spindle_table(machine: MachineDefinition) -> Iterator[Problem]:
     count = machine.speed_count
     spindle_type = int(_number(machine, 19))
+    if spindle_type in GENERATED_TABLE_TYPES:
+        cells = 2 * int(_number(machine, 7))
+        empty = [i for i in range(1, cells + 1) if machine.store[i] is ABSENT]
+        if empty:
+            yield (
+                "spindle_table",
+                "speeds",
+                f"spindle type {spindle_type} keeps the highest speed and the change between "
+                f"speeds of each of the option 7 ranges in SRTAB(1..{cells}); "
+                f"SRTAB({empty[0]}) is empty",
+            )
+        return
     missing = [i for i in range(1, count + 1) if machine.store[i] is ABSENT]
     if missing:
         yield (

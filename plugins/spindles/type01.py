@@ -17,12 +17,28 @@ from gecent.core.hookspecs import Register, hookimpl
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.spindle import SpindleRequest, SpindleSelection, limited
 
+# One range of a minimum and a maximum speed (option 7 = 1, option 8 = 2, 001 L14646-14654);
+# the limits span the manual's examples 137.2 RPM -> S614 and 0.0123 RPM -> S212 and reach
+# the largest speed magic three codes.
+MANUAL_EXAMPLE = """
+[machine]
+name = "spindle-type01"
+title = "TYPE 1 SPINDLE (4.5.2)"
+[optab]
+7 = 1.0
+8 = 2.0
+19 = 1.0
+[spindle_table]
+speeds = [0.01, 9999.0]
+"""
+
 
 @dataclass(frozen=True)
 class EiaThreeDigitSpindle:
     number: int = 1
     name: str = "EIA 3-digit code number (variable spindle)"
     section: str = "§4.5.2"
+    manual_example: str = MANUAL_EXAMPLE
 
     def limits(self, machine: MachineDefinition) -> tuple[float, float]:
         speeds = machine.spindle_speeds()

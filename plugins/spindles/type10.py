@@ -27,6 +27,27 @@ from gecent.core.spindle import (
     range_for,
 )
 
+# The §4.5.11 example: ranges 1.2-13, 3.1-31 and 6.6-69 RPM with M60/M61, M62/M63,
+# M64/M65 for CLW/CCLW (001 L15050-15062).
+MANUAL_EXAMPLE = """
+[machine]
+name = "spindle-type10"
+title = "TYPE 10 SPINDLE (4.5.11)"
+[optab]
+7 = 3.0
+8 = 2.0
+19 = 10.0
+[tablem]
+71 = 61
+72 = 60
+73 = 63
+74 = 62
+75 = 65
+76 = 64
+[spindle_table]
+speeds = [1.2, 13.0, 3.1, 31.0, 6.6, 69.0]
+"""
+
 SHIFT_DWELL = 6.0  # seconds, fixed by the manual (001 L15092-15097)
 
 
@@ -41,6 +62,7 @@ class VariableRangeSpindle:
     number: int = 10
     name: str = "variable speed with range and direction M code"
     section: str = "§4.5.11"
+    manual_example: str = MANUAL_EXAMPLE
     own_dwells: bool = True  # its shift dwell is fixed at 6 s; option 54 is not used
 
     def ranges(self, machine: MachineDefinition) -> tuple[tuple[float, float], ...]:
