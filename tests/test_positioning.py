@@ -192,3 +192,34 @@ def test_slide_limits_are_tested_on_positions() -> None:
     assert [(d.where.record if d.where else None, d.text) for d in result.diagnostics] == [
         (4, "X AXIS SLIDE LIMIT HAS BEEN EXCEEDED *** WARNING")
     ]
+
+
+def test_feed_type_5_z_and_xy_tables_end_to_end() -> None:
+    """E10 (001 L11476-11556) through a post: the manual's type-5 tables on MACH24 with
+    option 130 = +1. FEDRAT/40,RANGE,2: the XY block is F32 at 35.9 IPM, the Z block F25
+    at 15.1 IPM, each printed as the feed really made."""
+    example = get_plugins().get("feedtypes", 5).manual_example
+    machine = load_machine_text(example, "type5.toml", base=mach24("[optab]\n130 = 1.0\n"))
+    result = post(["FROM/0,0,5", "FEDRAT/40,RANGE,2", "GOTO/1,1,5", "GOTO/1,1,2"], machine)
+    assert tape_lines(result.blocks) == ["N003G80X+010000Y-010000F32", "N004Z+020000F25"]
+    assert [float(b.cells[19]) for b in result.blocks[1:3]] == [35.9, 15.1]  # type: ignore[arg-type]
+
+
+def test_a_repeated_hole_position_runs_the_cycle_again() -> None:
+    """A hole at the present XY still gets a block, with X and Y (decision): the control
+    runs its cycle on a positioning block. A new cycle sets its Z and R again."""
+    blocks = tape(
+        [
+            "FROM/0,0,5",
+            "CYCLE/DRILL,DEPTH,0.6,IPM,6,CLEAR,0.1",
+            "GOTO/1,1,0",
+            "CYCLE/BORE,DEPTH,0.6,IPM,3,CLEAR,0.1",
+            "GOTO/1,1,0",
+        ]
+    )
+    assert blocks == [
+        "N003G81Z+056000F12R+049",
+        "N003X+010000Y-010000",
+        "N005G85Z+056000F06R+049",
+        "N005X+010000Y-010000",
+    ]

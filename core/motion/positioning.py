@@ -122,12 +122,20 @@ class PositioningMotion:
     # -- POSMOV ----------------------------------------------------------------------------
 
     def _move(
-        self, record: Motion, point: tuple[float, ...], g_code: float | Absent = ABSENT
+        self,
+        record: Motion,
+        point: tuple[float, ...],
+        g_code: float | Absent = ABSENT,
+        hole: bool = False,
     ) -> None:
-        """One positioning move, as option 130 splits it."""
+        """One positioning move, as option 130 splits it. A hole at the present XY still
+        gets its block, with X and Y again: the control runs its cycle on a block."""
         part, steps = self._machine_point(point)
         previous = self.state.position.previous
         moved = [steps[a] != previous[a] for a in range(3)]
+        if hole and not (moved[X] or moved[Y]):
+            self.held[X] = self.held[Y] = None
+            moved[X] = moved[Y] = True
         self._rapid_test([steps[a] - previous[a] for a in range(3)])
         if g_code is ABSENT:
             g_code = self.cycle_off
@@ -217,7 +225,7 @@ class PositioningMotion:
             block.steps = (0, 0, 0)
             self.emit(block)
         tz = self.state.position.translation[Z]
-        self._move(record, (point[X], point[Y], height - tz + self.inversion), g_code)
+        self._move(record, (point[X], point[Y], height - tz + self.inversion), g_code, hole=True)
 
     def _cycle_g(self, cycle: Cycle, record: Motion) -> float:
         cell = CYCLE_TYPES[cycle.kind][1]
