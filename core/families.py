@@ -40,18 +40,31 @@ class FamilySpec:
     hook: str
     key: str
     option: int | None = None
-    numbers: range | None = None
+    numbers: frozenset[int] | None = None
 
+
+def _numbers(first: int, last: int) -> frozenset[int]:
+    return frozenset(range(first, last + 1))
+
+
+# option 19's types 0-19 less type 7, which SPTYPE hands to the machine's MACFUN itself
+SPINDLE_TYPES = _numbers(0, 19) - {7}
 
 FAMILIES: tuple[FamilySpec, ...] = (
     FamilySpec("machines", "register_machines", "name"),
-    FamilySpec("spindles", "register_spindle_types", "number", option=19, numbers=range(0, 20)),
-    FamilySpec("feedtypes", "register_feed_types", "number", option=78, numbers=range(0, 10)),
+    FamilySpec("spindles", "register_spindle_types", "number", option=19, numbers=SPINDLE_TYPES),
+    FamilySpec("feedtypes", "register_feed_types", "number", option=78, numbers=_numbers(0, 9)),
     FamilySpec(
-        "rotaryfeeds", "register_rotary_feed_types", "number", option=141, numbers=range(1, 2)
+        "rotaryfeeds", "register_rotary_feed_types", "number", option=141, numbers=_numbers(1, 1)
     ),
-    FamilySpec("classes", "register_transform_classes", "number", option=116, numbers=range(1, 10)),
-    FamilySpec("printouts", "register_printouts", "number", option=164, numbers=range(1, 5)),
+    FamilySpec(
+        "classes",
+        "register_transform_classes",
+        "number",
+        option=116,
+        numbers=_numbers(1, 9),
+    ),
+    FamilySpec("printouts", "register_printouts", "number", option=164, numbers=_numbers(1, 4)),
     FamilySpec("macfuns", "register_macfuns", "name"),
     FamilySpec("readers", "register_cl_readers", "name"),
 )

@@ -87,9 +87,20 @@ def _key(family: FamilySpec, obj: Any) -> str | int:
     if family.numbers is not None and key not in family.numbers:
         raise ValueError(
             f"{family.name} plugin {getattr(obj, 'name', obj)!r} has number {key}; "
-            f"option {family.option} allows {family.numbers.start}..{family.numbers.stop - 1}"
+            f"option {family.option} allows {_spans(family.numbers)}"
         )
     return key  # type: ignore[no-any-return]
+
+
+def _spans(numbers: frozenset[int]) -> str:
+    """0..6, 8..19: the allowed numbers as runs."""
+    runs: list[list[int]] = []
+    for number in sorted(numbers):
+        if runs and number == runs[-1][1] + 1:
+            runs[-1][1] = number
+        else:
+            runs.append([number, number])
+    return ", ".join(f"{a}..{b}" if a != b else str(a) for a, b in runs)
 
 
 def _register_family(

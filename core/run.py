@@ -162,6 +162,7 @@ class Run:
                 lambda n: plugins.get("spindles", n),
                 self.warn,
                 lambda point: macfun_handler(plugins, self.machine, point),
+                length=self.units.length,
             )
         return self._spindle
 

@@ -6,6 +6,14 @@ option 19 turns a speed into the S command (``select``). An RPM SPINDL outputs a
 block of its own at once, carrying S and, when the spindle starts or reverses, the
 direction M code (TABLEM 4 CLW, 5 CCLW); OFF outputs TABLEM(6) (or S0 under option 127).
 A machine without an S register (REGFOR(12) = 0) gets no S word and no speed comment.
+
+``SPINDL/f,SFM[,CLW|CCLW][,RANGE,r][,RADIUS,XCOORD|YCOORD|ZCOORD|R][,MAXIPM,v][,MAXRPM,s]``
+establishes the SFM mode of manual §4.4 (001 L14436-14462; core/motion/sfm.py): the
+spindle range is locked (SFMLOK: LOCRNG does nothing, RANGE,r chooses it), and every
+cutting path is split into pieces, each carrying its own S in its block. A spindle that is
+off, reverses or changes range is started by the statement at the speed for the present
+point's radius. Any other SPINDL statement ends the mode ("RPM MODE ESTABLISHED"), and so
+does FEDRAT/n,IPM under option 2 = 1.
 """
 
 from __future__ import annotations
@@ -13,9 +21,10 @@ from __future__ import annotations
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from itertools import pairwise
+from math import inf
 from typing import Protocol, runtime_checkable
 
-from gecent.core.cl.records import Statement, Word
+from gecent.core.cl.records import Arg, Statement, Word
 from gecent.core.errors import (
     Diagnostic,
     FatalError,
@@ -26,12 +35,26 @@ from gecent.core.errors import (
 )
 from gecent.core.families import HookPoint, MacfunHandler
 from gecent.core.machine.definition import MachineDefinition
+from gecent.core.machine.shuffle import decode_shuffle
+from gecent.core.motion.linear import TWO_AXIS
+from gecent.core.motion.sfm import (
+    ESTABLISHED,
+    MAXIPM_EXCEEDED,
+    RPM_ESTABLISHED,
+    SpeedLadder,
+    piece_feed,
+    plan,
+    range_feed_limits,
+    spindle_speed,
+    step_fraction,
+)
 from gecent.core.output.block import Block, Code
 from gecent.core.output.element import OutputElement
-from gecent.core.reinstate import SPINDLE_COMMAND, SPINDLE_M, SPINDLE_RANGE
+from gecent.core.reinstate import SFM, SPINDLE_COMMAND, SPINDLE_M, SPINDLE_RANGE
 from gecent.core.state import PostState
 
 CLW, CCLW = 1, -1
+MACFUN_TYPE = 7  # option 19 = 7: the machine's MACFUN computes S (§4.5.8)
 _DIRECTION_WORDS = {"CLW": CLW, "CCLW": CCLW}
 _M_CELL = {CLW: 4, CCLW: 5}
 _OFF_CELL = 6
@@ -105,9 +128,14 @@ class SpindleRequest:
 
 @runtime_checkable
 class SpindleType(Protocol):
-    number: int
-    name: str
-    section: str
+    @property
+    def number(self) -> int: ...
+
+    @property
+    def name(self) -> str: ...
+
+    @property
+    def section(self) -> str: ...
 
     def select(self, machine: MachineDefinition, request: SpindleRequest) -> SpindleSelection: ...
 
@@ -165,15 +193,18 @@ class TableChoice:
 
 def range_for(ranges: tuple[tuple[float, ...], ...], speed: float, requested: int | None) -> int:
     """The range a speed is looked up in: the programmed one, else the lowest range that
-    spans it (LOCRNG), else the range holding the nearer end of the whole table."""
+    spans it (LOCRNG), else the range with the nearest end."""
     if requested is not None:
         return max(1, min(requested, len(ranges)))
     number = lowest_range(ranges, speed)
     if number is not None:
         return number
-    everything = [s for speeds in ranges for s in speeds]
-    target = min(everything) if speed < min(everything) else max(everything)
-    return next(n for n, speeds in enumerate(ranges, start=1) if target in speeds)
+    # outside every range: the range whose end is nearest (the table's own end beyond it,
+    # the nearer neighbour in a gap between ranges; a tie takes the lower range)
+    return min(
+        (n for n, speeds in enumerate(ranges, start=1) if speeds),
+        key=lambda n: (min(abs(speed - s) for s in (ranges[n - 1][0], ranges[n - 1][-1])), n),
+    )
 
 
 def choose_speed(
@@ -209,7 +240,12 @@ def choose_speed(
 def check_ascending(
     machine: MachineDefinition, ranges: tuple[tuple[float, ...], ...], kind: str
 ) -> None:
-    """Table types scan each range upward: a range out of order is a machine-file error."""
+    """Table types scan each range upward: no table, or a range empty or out of order, is
+    a machine-file error."""
+    if not ranges:
+        raise MachineDefinitionError(
+            machine.origin, "spindle_table", "speeds", f"{kind} needs a table of speeds"
+        )
     for number, speeds in enumerate(ranges, start=1):
         if not speeds or any(b < a for a, b in pairwise(speeds)):
             raise MachineDefinitionError(
@@ -231,21 +267,38 @@ class SpindleElement:
         spindle_type: Callable[[int], SpindleType | None],
         warn: Callable[[Diagnostic], None],
         macfun: Callable[[HookPoint], MacfunHandler | None] | None = None,
+        length: Callable[[float], float] | None = None,
     ) -> None:
         machine = state.machine
         self.state = state
+        # a length of a statement in the CL unit, in machine units (UNITS; SFM's RADIUS,r)
+        self.length = length if length is not None else float
         self.output = output
         self.warn = warn
         self.macfun = macfun
         self.has_s_register = machine.registers.formats[12] is not None
         self.type_number = int(machine.number_option(19))
-        self.spindle_type = spindle_type(self.type_number) if self.has_s_register else None
+        self.spindle_type: SpindleType | None = None
+        if self.has_s_register:
+            if self.type_number == MACFUN_TYPE:  # SPTYPE's own branch to MACSRT
+                from gecent.core.spindle_macfun import MachineComputedSpindle
+
+                self.spindle_type = MachineComputedSpindle()
+            else:
+                self.spindle_type = spindle_type(self.type_number)
+        self._ladder: SpeedLadder | None = None  # the locked range's speeds while in SFM
 
     def statement(self, statement: Statement) -> None:
         words = [a.name for a in statement.args if isinstance(a, Word)]
+        if "SFM" in words:
+            self._sfm(statement, words)
+            return
         unbuilt = [w for w in words if w not in ("RPM", "CLW", "CCLW", "RANGE", "ON", "OFF")]
         if unbuilt:
             raise NotYetSupported(f"SPINDL/{unbuilt[0]}", statement.where)
+        if self.state.sfm.active:
+            leave_sfm(self.state)  # any other SPINDL ends the SFM mode (option 2, L24361)
+            self.warn(Diagnostic(RPM_ESTABLISHED, statement.where))
         if "OFF" in words:
             if len(statement.args) != 1:
                 raise InputError("SPINDL/OFF takes nothing else", statement.where)
@@ -261,6 +314,134 @@ class SpindleElement:
         speed of the range and the return to speed), as SPINDL/speed[,RANGE,r] would."""
         self._on(where, record, speed, in_range, [])
 
+    # -- SFM (manual §4.4) ------------------------------------------------------------------
+
+    def _sfm(self, statement: Statement, words: list[str]) -> None:
+        """SPINDL/f,SFM (001 L14436-14462): SFMFLG, SFMDES, SPNDIR, ISRNGE, ISFMOD/SFMRAD,
+        SFMAXI, SFMAXR, SFMLOK. The spindle is started (or reversed, or shifted to RANGE,r)
+        at the speed for the present point's radius; a spindle turning as asked is left
+        alone, and the first cut gives it its speed."""
+        where = statement.where
+        machine = self.state.machine
+        request = _sfm_request(statement, words, _radial_axis(machine))
+        if not self.has_s_register:
+            raise InputError("SPINDL/SFM needs an S register (REGFOR(12) is 0)", where)
+        if self.spindle_type is None:
+            raise NotYetSupported(f"spindle type {self.type_number} (option 19)", where)
+        if request.radius_axis == 2 and machine.number_option(22) in TWO_AXIS:
+            raise InputError("SPINDL/SFM RADIUS,ZCOORD on a machine with two axes", where)
+        ranges = self.spindle_type.range_count(machine)
+        requested_range = request.range
+        if requested_range is not None and requested_range > ranges:
+            self.warn(Diagnostic("RANGE REQUESTED IS NOT AVAILABLE, USE HIGHEST", where))
+            requested_range = ranges
+        sfm = self.state.sfm
+        sfm.active = True
+        sfm.surface_feet = request.surface_feet
+        sfm.radius_axis = request.radius_axis
+        sfm.fixed_radius = self.length(request.fixed_radius)
+        sfm.maximum_rpm = request.maximum_rpm
+        sfm.locked_range = None  # the statement itself may choose the range (LOCRNG)
+        if request.maximum_ipm is not None:
+            feed = self.state.feed
+            high = range_feed_limits(machine, feed.range)[1]
+            feed.maximum_ipm = min(request.maximum_ipm * 25.4 / _machine_mm(machine), high)
+        self.warn(Diagnostic(ESTABLISHED, where))
+        spindle = self.state.spindle
+        direction = request.direction
+        if (
+            not spindle.on
+            or spindle.speed is None
+            or (direction is not None and direction != spindle.direction)
+            or (requested_range is not None and requested_range != spindle.range)
+        ):
+            number = self._starting_range(requested_range)
+            speed = self._starting_speed(number)
+            turning = [w for w in words if w in _DIRECTION_WORDS]
+            self._on(where, statement.number, speed, number, turning)
+        sfm.locked_range = spindle.range
+        self._ladder = self._speed_ladder(spindle.range)
+        sfm.driver = self
+        self.state.remember(SFM, request.surface_feet)
+
+    def _starting_range(self, requested_range: int | None) -> int:
+        """The range SFM will lock: RANGE,r; else the present one of a turning spindle; else
+        LOCRNG's, the lowest range holding the speed for the present radius (the highest
+        range on the centre line)."""
+        assert self.spindle_type is not None
+        machine = self.state.machine
+        spindle = self.state.spindle
+        if requested_range is not None:
+            return requested_range
+        if spindle.on and spindle.speed is not None:
+            return spindle.range
+        sfm = self.state.sfm
+        speed = spindle_speed(sfm.surface_feet, self._present_radius())
+        if sfm.maximum_rpm is not None:
+            speed = min(speed, sfm.maximum_rpm)
+        if speed == inf:
+            return self.spindle_type.range_count(machine)
+        request = SpindleRequest(speed, None, spindle.direction or CLW)
+        return self.spindle_type.select(machine, request).range
+
+    def _starting_speed(self, range_number: int) -> float:
+        """The speed SFMO would give the present point in that range (the bracket rule of a
+        table, MAXRPM, the range's top on the centre line); the exact speed when SFM cannot
+        start there, which the type then holds to its range with its comment."""
+        radius = self._present_radius()
+        surface = self.state.sfm.surface_feet
+        start = plan(surface, radius, radius, self._speed_ladder(range_number))
+        return start.pieces[0].speed if start.pieces else start.start_speed
+
+    def _present_radius(self) -> float:
+        """The radius of the present point in inches: SFMRAD's fixed radius, or the absolute
+        value of the RADIUS coordinate on the step grid."""
+        sfm = self.state.sfm
+        inches = _machine_mm(self.state.machine) / 25.4
+        if sfm.radius_axis is None:
+            return sfm.fixed_radius * inches
+        step = self.state.machine.number_option(14)
+        return abs(self.state.position.present[sfm.radius_axis]) * step * inches
+
+    def _speed_ladder(self, range_number: int) -> SpeedLadder:
+        """The locked range's speeds as the type gives them (speed_limits, table_speeds)."""
+        assert self.spindle_type is not None
+        machine = self.state.machine
+        low, high = self.spindle_type.speed_limits(machine, range_number)
+        table = self.spindle_type.table_speeds(machine, range_number)
+        if table is not None:
+            return SpeedLadder(table[0], table[-1], table, maximum=self.state.sfm.maximum_rpm)
+        option_15 = machine.number_option(15)
+        if option_15 == 0:
+            raise MachineDefinitionError(
+                machine.origin,
+                "optab",
+                15,
+                "SFM on a variable spindle (types 1, 10, 18) steps the speed by option 15; "
+                "it must not be 0",
+            )
+        return SpeedLadder(low, high, None, step_fraction(option_15), self.state.sfm.maximum_rpm)
+
+    def ladder(self) -> SpeedLadder:
+        """The speeds of the locked range (SurfaceSpeedDriver)."""
+        assert self._ladder is not None, "no SPINDL/SFM has been given"
+        return self._ladder
+
+    def turn(self, speed: float, where: SourcePosition, record: int) -> None:
+        """A piece of an SFM path turns at ``speed`` (SurfaceSpeedDriver): SPTYPE's S command
+        waits for the piece's own block (SPNCOM rides in the block OUTPUT emits next); then
+        TSTSAF's feed, F_IPM = F_IPR x S in IPR mode, within FRMAX and MAXIPM."""
+        spindle = self.state.spindle
+        if not spindle.on or spindle.speed is None or abs(spindle.speed - speed) > _EXACT:
+            self._on(where, record, speed, self.state.sfm.locked_range, [], ride=True)
+        feed = self.state.feed
+        assert spindle.speed is not None
+        ipm, exceeded = piece_feed(self.state.machine, feed, spindle.speed)
+        if exceeded and feed.ipm != ipm:  # once as the feed comes to MAXIPM, not per piece
+            self.warn(Diagnostic(MAXIPM_EXCEEDED, where))
+        if ipm is not None:
+            feed.ipm = ipm
+
     def _on(
         self,
         where: SourcePosition,
@@ -268,9 +449,15 @@ class SpindleElement:
         speed: float | None,
         requested_range: int | None,
         words: list[str],
+        *,
+        ride: bool = False,
     ) -> None:
+        """The speed block of SPINDL; with ``ride`` the S command waits for the next block
+        instead (an SFM piece's own motion block)."""
         machine = self.state.machine
         spindle = self.state.spindle
+        if requested_range is None and self.state.sfm.locked_range is not None:
+            requested_range = self.state.sfm.locked_range  # SFMLOK: LOCRNG does nothing
         if speed is None:
             speed = spindle.speed
         if speed is None:
@@ -342,17 +529,18 @@ class SpindleElement:
                 else:
                     block = Block(Code.NONMOTION, record)
                 self.output.output(block)
-        cells = selection.direction_cells if selection and selection.direction_cells else _M_CELL
-        range_changed = selection is not None and selection.range != spindle.range
-        if not was_on or reversed_ or (cells is not _M_CELL and range_changed):
-            self._store(cells[direction], where)
         if selection is not None and selection.range_cell is not None:
+            # the gear first, then the spindle's direction (TYPE03, 001 L39227-39290)
             code = machine.m_code(selection.range_cell)
             if code is None:
                 self._store(selection.range_cell, where)  # comment 22
             elif code != spindle.range_code:
                 self.output.store_m(code)
                 spindle.range_code = code
+        cells = selection.direction_cells if selection and selection.direction_cells else _M_CELL
+        range_changed = selection is not None and selection.range != spindle.range
+        if not was_on or reversed_ or (cells is not _M_CELL and range_changed):
+            self._store(cells[direction], where)
         spindle.speed, spindle.direction, spindle.on = speed, direction, True
         if selection is not None:
             spindle.speed, spindle.range = selection.speed, selection.range
@@ -366,6 +554,8 @@ class SpindleElement:
             block = self.output.dwell(selection.dwell_after)
             block.record = record
             self.output.output(block)
+            return
+        if ride:
             return
         self.output.output(Block(Code.NONMOTION, record))
         if selection is not None and range_changed and not selection.steps:
@@ -388,12 +578,119 @@ class SpindleElement:
             self.state.pending.spindle = 0.0
             self.output.output(Block(Code.NONMOTION, statement.number))
             return
-        self._store(_OFF_CELL, statement.where)
         self.state.remember(SPINDLE_M, None)
-        self.output.output(Block(Code.AUX_ONLY, statement.number))
+        if self.output.store_cell(_OFF_CELL, self.warn, statement.where) is not None:
+            self.output.output(Block(Code.AUX_ONLY, statement.number))
 
     def _store(self, cell: int, where: SourcePosition) -> None:
         self.output.store_cell(cell, self.warn, where)
+
+
+def leave_sfm(state: PostState) -> None:
+    """SFMFLG = SFMLOK = 0: back to RPM mode at the present speed; STATE(5) is cleared and
+    a per-minute feed MAXIPM had lowered is the programmed one again."""
+    sfm = state.sfm
+    if not sfm.active:
+        return
+    sfm.active = False
+    sfm.locked_range = None
+    sfm.driver = None
+    state.remember(SFM, None)
+    feed = state.feed
+    if not feed.per_revolution and feed.programmed is not None:
+        low, high = range_feed_limits(state.machine, feed.range)
+        feed.ipm = min(max(feed.programmed, low), high)
+
+
+def _machine_mm(machine: MachineDefinition) -> float:
+    """Millimetres per machine unit: 1 on a metric machine (option 138 = 1), else 25.4."""
+    return 1.0 if machine.number_option(138) == 1 else 25.4
+
+
+@dataclass(frozen=True, slots=True)
+class _SfmRequest:
+    surface_feet: float
+    direction: int | None = None
+    range: int | None = None
+    radius_axis: int | None = None
+    fixed_radius: float = 0.0
+    maximum_ipm: float | None = None
+    maximum_rpm: float | None = None
+
+
+_COORDINATES = {"XCOORD": 0, "YCOORD": 1, "ZCOORD": 2}
+
+
+def _radial_axis(machine: MachineDefinition) -> int:
+    """The CL axis the machine outputs as X (option 59), the lathe's radial axis in the
+    manual's Diagram 4.4C; CL x when none is (decision: the radius SFM reads without
+    RADIUS)."""
+    targets = decode_shuffle(machine.number_option(59), "XYZ")
+    return next((k for k, t in enumerate(targets) if t is not None and t.axis == "X"), 0)
+
+
+def _sfm_request(statement: Statement, words: list[str], default_axis: int) -> _SfmRequest:
+    """The SFM statement's items: one surface speed, SFM, at most one of CLW/CCLW, and the
+    couplets RANGE,r, RADIUS,XCOORD|YCOORD|ZCOORD|R, MAXIPM,v and MAXRPM,s in any order;
+    without RADIUS the radius is ``default_axis``."""
+    where = statement.where
+    if "RPM" in words:
+        raise InputError("SPINDL takes one of RPM and SFM", where)
+    surface: float | None = None
+    couplets: dict[str, Arg] = {}
+    directions: list[int] = []
+    args = statement.args
+    index = 0
+    while index < len(args):
+        arg = args[index]
+        index += 1
+        if not isinstance(arg, Word):
+            if surface is not None:
+                raise InputError("SPINDL/SFM expects one surface speed", where)
+            surface = float(arg)
+        elif arg.name in ("RANGE", "RADIUS", "MAXIPM", "MAXRPM"):
+            if index >= len(args) or arg.name in couplets:
+                raise InputError(f"SPINDL/SFM {arg.name} expects one value after it", where)
+            couplets[arg.name] = args[index]
+            index += 1
+        elif arg.name in _DIRECTION_WORDS:
+            directions.append(_DIRECTION_WORDS[arg.name])
+        elif arg.name != "SFM":
+            raise NotYetSupported(f"SPINDL/SFM with {arg.name}", where)
+    if surface is None or surface <= 0:
+        raise InputError("SPINDL/SFM expects a surface speed > 0 (feet per minute)", where)
+    if len(directions) > 1:
+        raise InputError("SPINDL takes one of CLW and CCLW", where)
+    numbers = {}
+    for name, item in couplets.items():
+        if name == "RADIUS" and isinstance(item, Word):
+            continue
+        if isinstance(item, Word):
+            raise InputError(f"SPINDL/SFM {name} expects a number, found {item.name}", where)
+        numbers[name] = float(item)
+        if numbers[name] < 0 or (name != "RADIUS" and numbers[name] == 0):
+            raise InputError(f"SPINDL/SFM {name} expects a positive number", where)
+    radius = couplets.get("RADIUS")
+    radius_axis: int | None = default_axis
+    fixed = 0.0
+    if isinstance(radius, Word):
+        if radius.name not in _COORDINATES:
+            raise InputError("SPINDL/SFM RADIUS expects XCOORD, YCOORD, ZCOORD or a radius", where)
+        radius_axis = _COORDINATES[radius.name]
+    elif radius is not None:
+        radius_axis, fixed = None, numbers["RADIUS"]
+    range_number = numbers.get("RANGE")
+    if range_number is not None and range_number != int(range_number):
+        raise InputError(f"SPINDL/SFM RANGE expects a range number, found {range_number:g}", where)
+    return _SfmRequest(
+        surface,
+        directions[0] if directions else None,
+        None if range_number is None else int(range_number),
+        radius_axis,
+        fixed,
+        numbers.get("MAXIPM"),
+        numbers.get("MAXRPM"),
+    )
 
 
 def assumed_speed(machine: MachineDefinition, where: SourcePosition | None) -> float:

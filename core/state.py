@@ -7,10 +7,14 @@ are whole numbers of steps (see core/motion/rounding.py).
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
 from gecent.core.absent import ABSENT, Absent
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.reinstate import StateVector
+
+if TYPE_CHECKING:
+    from gecent.core.motion.sfm import SurfaceSpeedDriver
 
 
 @dataclass(slots=True)
@@ -107,6 +111,25 @@ class Threading:
 
 
 @dataclass(slots=True)
+class Sfm:
+    """The SFM mode (manual §4.4, 001 L14436-14462; parameters L17563-17570, L18365-18440):
+    SFMFLG, SFMDES, ISFMOD/SFMRAD, SFMAXR and SFMLOK with the range it locks. MAXIPM's
+    SFMAXI is the feed's (``Feed.maximum_ipm``), which FEDRAT/...,MAXIPM also sets.
+
+    ``driver`` is the spindle element that gives the locked range's speeds and turns the
+    spindle for each piece of a path (SFMO's calls of SPTYPE and TSTSAF)."""
+
+    active: bool = False  # SFMFLG: 1 = SFM mode, 0 = RPM mode
+    surface_feet: float = 0.0  # SFMDES: the surface speed, feet per minute
+    radius_axis: int | None = 0  # ISFMOD - 1: the CL axis (0 x, 1 y, 2 z); None: fixed
+    fixed_radius: float = 0.0  # SFMRAD >= 0: the radius, machine units, when axis is None
+    maximum_rpm: float | None = None  # SFMAXR: MAXRPM, s
+    locked_range: int | None = None  # SFMLOK: the spindle range no speed may leave
+    last_end: int = 0  # SFMLIM's cause for the last path (EndCondition; 0: could not start)
+    driver: SurfaceSpeedDriver | None = None
+
+
+@dataclass(slots=True)
 class Numbering:
     """SEQNO: ``series`` gives the next N and the increment; ``off`` drops N words."""
 
@@ -126,6 +149,7 @@ class PostState:
     modes: Modes = field(default_factory=Modes)
     numbering: Numbering = field(default_factory=Numbering)
     threading: Threading = field(default_factory=Threading)
+    sfm: Sfm = field(default_factory=Sfm)
     conditions: StateVector = field(default_factory=StateVector)  # STATE(12), option 145
     sequence: int = 0  # SEQCTR: the CL record number of the record being processed
     skipping: bool = False  # SKPFLG (OPSKIP)

@@ -73,7 +73,6 @@ def test_tool_change_on_a_mill_with_a_t_register_is_a_dwell_block() -> None:
     [
         ("LOADTL/1,LENGTH,5", NotYetSupported),
         ("LOADTL/1.5", InputError),
-        ("SPINDL/100,SFM", NotYetSupported),
         ("SPINDL/100,200", InputError),
         ("SPINDL/OFF,100", InputError),
         ("SPINDL/100,RANGE", InputError),

@@ -29,7 +29,7 @@ from gecent.core.spindle import (
     SpindleSelection,
     SpindleType,
 )
-from gecent.plugins.spindles.type07 import SpindleCodeContext
+from gecent.core.spindle_macfun import SpindleCodeContext
 from gecent.plugins.spindles.type12 import speed_command
 
 from tests.test_post_linear import post
@@ -123,7 +123,7 @@ def register_macfuns(register: Register) -> None:
 
 def type7_run(lines: list[str], name: str = "type07-local") -> list[str]:
     machine = load_machine_text(TYPE7_MACHINE.replace("type07-local", name), f"{name}.toml")
-    plugins = load_module_plugins("gecent.plugins.spindles.type07", __name__)
+    plugins = load_module_plugins(__name__)  # type 7 is the kernel's: no spindle plugin
     run = Run(machine, plugins)
     result = run.process(AptSourceReader("part.apt").read_lines([*lines, "FINI"]))
     return tape_lines(result.blocks)
@@ -380,12 +380,13 @@ def test_type14_same_range_in_two_modes() -> None:
 
 def test_type14_mode_code_only_on_a_mode_change() -> None:
     """TABLEM(72) = M26 for mode 1 and TABLEM(74) = M27 for mode 2 go out when the mode
-    changes, not within a mode (001 L15318-15322, L39705-39712)."""
+    changes, not within a mode, before the spindle's direction code (001 L15318-15322,
+    L39705-39712)."""
     machine = example(14)
     program = ["SPINDL/40,CLW,RANGE,3", "SPINDL/40,RANGE,13", "SPINDL/128,RANGE,13", "SPINDL/10"]
     assert tape(program, machine) == [
-        "N001M03",
-        "N001S035M26",
+        "N001M26",
+        "N001S035M03",
         "N002S030M27",
         "N003S031",
         "N004S013M26",
@@ -463,8 +464,8 @@ def test_type16_on_tape_range_only_and_combined_codes() -> None:
     when it changes; with TABLEM 4 and 5 empty the range pair is the direction code."""
     machine = example(16)
     assert tape(["SPINDL/750,CLW", "SPINDL/150", "SPINDL/1000"], machine) == [
-        "N001M03",
-        "N001S005M42",
+        "N001M42",
+        "N001S005M03",
         "N002S005M41",
         "N003S015M42",
     ]

@@ -21,7 +21,7 @@ from math import hypot
 
 from gecent.core.absent import ABSENT
 from gecent.core.cl.records import Circle, Motion, MotionSubtype
-from gecent.core.errors import Diagnostic
+from gecent.core.errors import Diagnostic, NotYetSupported
 from gecent.core.motion.rounding import round_to_step, to_steps
 from gecent.core.output.block import Block, Code
 from gecent.core.state import PostState
@@ -93,6 +93,8 @@ class CircularMotion:
             return False
         if self.state.feed.rapid_ipm:
             return False  # a rapid move is never an arc (decision, PROCQD reads FRAPID)
+        if self.state.sfm.active:
+            raise NotYetSupported("SFM on circles (SFMCIR, OFFARC)", record.where)
         points = [p[:3] for p in record.points]
         u, v, normal = PLANES[self.plane]
         if self.machine.number_option(28) != 1:

@@ -5,7 +5,10 @@
   rounded points, so no error accumulates (appendix 7.2);
 * a move of no whole step is no move: nothing is output and the previous point stays;
 * a departure beyond DEPMAX (option 4) is segmented (core/motion/segments.py);
-* the motion element works in CL axis order; options 59/60 are applied at output (SHUFFL).
+* the motion element works in CL axis order; options 59/60 are applied at output (SHUFFL);
+* in SFM mode (SFMFLG) every feed move goes to SFMO (core/motion/sfm.py), after DEPMAX's
+  segmentation as SEGMNT calls it per segment (001 L1310-1330): each segment is split at
+  the shift radii and each piece carries its spindle speed; rapid moves are not.
 """
 
 from __future__ import annotations
@@ -16,6 +19,7 @@ from gecent.core.cl.records import Motion, MotionSubtype
 from gecent.core.errors import InputError
 from gecent.core.motion.rounding import to_steps
 from gecent.core.motion.segments import segment_count, segments
+from gecent.core.motion.sfm import surface_cuts
 from gecent.core.output.block import Block, Code
 from gecent.core.state import PostState
 
@@ -42,6 +46,8 @@ class LinearMotion:
         # over 9.9999 in is segmented to 9.9999; a longer rapid goes in G10 with STEP x 10
         self.variable_format = machine.number_option(41) == 0
         self.short_max = round(9.9999 / self.step)
+        # SFM's radii are in inches whatever the machine's unit (option 138 = 1: millimetres)
+        self.inches_per_unit = 1.0 / 25.4 if machine.number_option(138) == 1 else 1.0
 
     def record(self, record: Motion) -> None:
         if record.subtype is MotionSubtype.FROM:
@@ -102,18 +108,49 @@ class LinearMotion:
         count = segment_count(departures, [depmax] * self.axes)
         reached = list(position.previous[:3])
         carry = [0] * self.axes
+        surface = self.state.sfm.active and not self.state.feed.rapid_ipm
         for part in segments(departures, count) if count > 1 else (tuple(departures),):
             if coarse:
                 part = _truncated_to_thousandths(part, carry)
+            start = tuple(reached)
             for axis, steps in enumerate(part):
                 reached[axis] += steps
-            self.emit(Block.motion(Code.LINEAR, record.number, part, tuple(reached), self.step))
+            if surface:
+                self._surface_cut(record, start, tuple(reached))
+            else:
+                self.emit(Block.motion(Code.LINEAR, record.number, part, tuple(reached), self.step))
         if coarse:
             # the truncated remnant is taken off the present point, so the next departure
             # recovers it (truncate and carry, 001 L16200-16245)
             position.present[: self.axes] = reached[: self.axes]
         position.previous_part[:] = position.present_part
         position.previous[:] = position.present
+
+    def _surface_cut(self, record: Motion, start: tuple[int, ...], end: tuple[int, ...]) -> None:
+        """SFMO (manual §4.4): the segment from ``start`` to ``end`` (steps) in pieces at the
+        shift radii, each piece's speed set before its block is output, so its S rides in
+        it; a path on which SFM cannot start keeps the current speed."""
+        sfm = self.state.sfm
+        driver = sfm.driver
+        assert driver is not None, "SFM mode without its spindle"
+        path = surface_cuts(
+            start,
+            end,
+            sfm.radius_axis,
+            sfm.fixed_radius * self.inches_per_unit,
+            sfm.surface_feet,
+            driver.ladder(),
+            self.step * self.inches_per_unit,
+        )
+        last = path.ends[-1] if path.ends else None
+        sfm.last_end = 0 if last is None else int(last)
+        at = start
+        for cut in path.cuts:
+            if cut.speed is not None:
+                driver.turn(cut.speed, record.where, record.number)
+            part = tuple(cut.point[axis] - at[axis] for axis in range(self.axes))
+            self.emit(Block.motion(Code.LINEAR, record.number, part, cut.point, self.step))
+            at = cut.point
 
 
 def _truncated_to_thousandths(part: tuple[int, ...], carry: list[int]) -> tuple[int, ...]:

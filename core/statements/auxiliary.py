@@ -17,6 +17,7 @@ from gecent.core.errors import InputError
 from gecent.core.output.block import Block, Code
 from gecent.core.output.marks import leader_block, stand_in
 from gecent.core.reinstate import COOLANT, StateVector
+from gecent.core.spindle import leave_sfm
 
 if TYPE_CHECKING:
     from gecent.core.run import Run
@@ -154,6 +155,7 @@ def _reset(run: Run) -> None:
     follow (comment 47 otherwise)."""
     state = run.state
     _spindle_and_coolant_off(run)
+    leave_sfm(state)
     state.spindle.speed = None
     state.modes.stopped = False
     state.modes.ended = True

@@ -8,9 +8,11 @@ from typing import TYPE_CHECKING
 
 from gecent.core.cl.records import Arg, Statement, Word
 from gecent.core.errors import Diagnostic, InputError, NotYetSupported
+from gecent.core.feed.positioning import FeedContext
 from gecent.core.feed.rapid import feed_range_cell
+from gecent.core.motion.sfm import range_feed_limits
 from gecent.core.reinstate import FEED_M
-from gecent.core.spindle import assumed_speed
+from gecent.core.spindle import assumed_speed, leave_sfm
 
 _FEED_UNITS = ("IPM", "MMPM", "IPR", "MMPR")
 # FEDRAT/...,RANGE,LOW|MEDIUM|HIGH: the manual scans for the three words, then for a number
@@ -42,6 +44,9 @@ def fedrat(run: Run, statement: Statement) -> None:
     keeps the last mode. Without a feed value the held one is kept (FEDRAT/RANGE,2)."""
     request = _scan(statement)
     feed = run.state.feed
+    per_minute = request.unit is not None and request.unit.name in ("IPM", "MMPM")
+    if per_minute and run.machine.number_option(2) == 1:
+        leave_sfm(run.state)  # option 2 = 1: FEDRAT/n,IPM also ends SFM (001 L24361-24374)
     ipm: float | None = None
     if request.value is not None:
         value = run.units.per_minute(request.value, request.unit)
@@ -129,6 +134,9 @@ def _select_range(run: Run, requested: int | None, statement: Statement) -> None
     count = int(machine.number_option(18))
     feed = run.state.feed
     if count <= 1:
+        if requested is not None and machine.number_option(1) != 0:
+            # a positioning feed type's table range (types 4, 5, 6), no M code or dwell
+            feed.range = requested
         return  # one range: nothing to select
     if requested is None:
         if feed.range == 0:
@@ -159,18 +167,8 @@ def _select_range(run: Run, requested: int | None, statement: Statement) -> None
 
 
 def feed_limits(run: Run) -> tuple[float, float]:
-    """FRMIN, FRMAX (step 8): the present range's FRTAB pair on a machine with several
-    ranges (option 25 >= 0: FRTAB holds one pair per range), else options 48 and 25."""
-    machine = run.machine
-    number = run.state.feed.range
-    ranges = machine.feed_ranges
-    if (
-        machine.number_option(18) > 1
-        and machine.number_option(25) >= 0
-        and 1 <= number <= len(ranges)
-    ):
-        return ranges[number - 1]
-    return machine.number_option(48), machine.number_option(25)
+    """FRMIN, FRMAX (step 8) of the present feed range; SFM's TSTSAF reads the same."""
+    return range_feed_limits(run.machine, run.state.feed.range)
 
 
 def program_feed(run: Run, value: float, unit: Word | None, statement: Statement) -> None:
@@ -216,8 +214,23 @@ def _hold_feed(run: Run, feed: float, statement: Statement, *, report: bool = Tr
                 statement.where,
             )
         )
+    if run.machine.number_option(1) != 0:
+        used = _positioning_snap(run, used, statement)
     run.state.feed.ipm = used
     run.state.feed.programmed = feed
+
+
+def _positioning_snap(run: Run, feed: float, statement: Statement) -> float:
+    """K = 0 of the positioning feed type (FTYPEn from FEDRAT, 001 L11316-11322): the feed
+    the machine can make becomes FEDIPM, so the listing prints the true value used."""
+    state = run.state
+    context = FeedContext(
+        state.spindle.speed, state.spindle.range, state.feed.range, run.output.milling
+    )
+    snap = run.feed_type.snap(run.machine, feed, context)
+    for comment in snap.comments:
+        run.warn(Diagnostic(comment, statement.where))
+    return snap.ipm
 
 
 def rapid(run: Run, statement: Statement) -> None:

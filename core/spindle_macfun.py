@@ -1,7 +1,9 @@
 """Spindle type 7: the machine's own S-code computation (manual §4.5.8, 001 L14980-14981;
 option 19 note L24608-24616; SPTYPE L37748-37752).
 
-§4.5.8 reads "TYPE 7: (PRESENTLY UNDEFINED)": GECENT III has no standard type 7. The
+§4.5.8 reads "TYPE 7: (PRESENTLY UNDEFINED)": GECENT III has no standard type 7, and no
+TYPE07 routine: SPTYPE itself branches to MACSRT. So type 7 is a kernel branch, not one of
+the nineteen spindle-type plugins (option 19 = 7 never looks for a plugin). The
 option table completes the picture: "If option(19) = 7.0, then set option(133) = 1.0", and
 SPTYPE branches to the machine subroutine (MACSRT) "for s-code calculation". So a type-7
 machine computes its S command in its own MACFUN code, at the hook point
@@ -20,7 +22,6 @@ from dataclasses import dataclass
 
 from gecent.core.errors import MachineDefinitionError
 from gecent.core.families import HookPoint, HookResult
-from gecent.core.hookspecs import Register, hookimpl
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.spindle import (
     SpindleRequest,
@@ -64,12 +65,14 @@ class SpindleCodeContext:
         )
 
 
+MACFUN_TYPE = 7
+
+
 @dataclass(frozen=True)
 class MachineComputedSpindle:
-    number: int = 7
+    number: int = MACFUN_TYPE
     name: str = "machine-computed S code (MACFUN)"
     section: str = "§4.5.8"
-    manual_example: str = ""  # the manual defines no type-7 machine
 
     def range_count(self, machine: MachineDefinition) -> int:
         return int(machine.number_option(7))
@@ -108,8 +111,3 @@ class MachineComputedSpindle:
 
     def _ranges(self, machine: MachineDefinition) -> tuple[tuple[float, ...], ...]:
         return _speed_table(machine)
-
-
-@hookimpl
-def register_spindle_types(register: Register) -> None:
-    register(MachineComputedSpindle())
