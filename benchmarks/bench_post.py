@@ -2,7 +2,10 @@
 to about a hundred thousand records, posted on the sample mill MACH23 to blocks, tape image,
 EIA punch and GEOUT1 listing; each stage timed apart, in CL records per second.
 
-    python benchmarks/bench_post.py [--records 100000] [--profile]
+    python benchmarks/bench_post.py [--records 100000] [--profile] [--machine mach24]
+
+With --machine mach24 the same points are posted as absolute positions on the sample drill
+(GEPOS, feed type 0).
 """
 
 from __future__ import annotations
@@ -27,12 +30,18 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__)
     parser.add_argument("--records", type=int, default=100_000)
     parser.add_argument("--profile", action="store_true", help="print the top of a profile")
+    parser.add_argument(
+        "--machine", default="mach23", help="mach23 (contouring) or mach24 (positioning)"
+    )
     args = parser.parse_args()
     lines = ROUGHING.read_text().splitlines(keepends=True)
     head, body = lines[:14], lines[14:-1]  # set-up statements once, then the moves
     copies = max(1, args.records // len(body))
     plugins = get_plugins()
-    machine = plugins.machine("mach23").load()
+    pack = plugins.machine(args.machine)
+    if pack is None:
+        parser.error(f"no machine {args.machine}")
+    machine = pack.load()
     printout = plugins.get("printouts", 1)
     with tempfile.TemporaryDirectory() as tmp:
         source = Path(tmp) / "roughing.ncl"

@@ -103,3 +103,25 @@ def test_tape_departures_add_up_to_the_cl_points(name: str) -> None:
         assert all(abs(r * step - v) <= step for r, v in zip(reached[record], point, strict=True))
         checked += 1
     assert checked > 0.9 * len(ends)
+
+
+def test_creo_drilling_file_on_the_positioning_machine_mach24() -> None:
+    """Creo's metric peck-drilling file (UNITS/MM, CYCLE/DEEP with STEP) on the sample drill:
+    9000 RPM is above the table, so the top speed 2400 RPM (range 3, row 7: S07) with the
+    manual's comment; the holes are absolute positions in inches (Y negated by option 59 =
+    132415); the cycle block is G83 (TABLEG(84)) with Z = the plunge from the 2 mm height
+    to 0.5 - 3.5 mm, 5 mm = .1969 in, R = 2 - (0.5 + 1) = .5 mm = .02 in, and F = 2 x 50
+    MMPM in IPM (1.9685 x 2 = 3.94: F4, 2 IPM made); STEP is left to the control."""
+    result = post(str(CORPUS / "creo/bohren_1.ncl.8"), get_plugins(), "24")
+    punched = [b.punch for b in result.blocks if b.punch and b.code is not Code.PARTNO]
+    assert punched == [
+        "N008G80T01",
+        "N011S07",
+        "N013G80X-002846Y+009055F99",
+        "N015G83Z+001969F04R+0002",
+        "N015X-002846Y+009055",
+        "N016X-006606",
+    ]
+    notes = [d.text for d in result.diagnostics]
+    assert "SPINDLE SPEED COULD NOT BE FOUND." in notes
+    assert "CYCLE STEP NOT OUTPUT: THE CONTROL'S OWN CYCLE DOES IT" in notes

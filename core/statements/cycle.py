@@ -10,9 +10,12 @@ from dataclasses import replace
 from typing import TYPE_CHECKING
 
 from gecent.core.cl.records import Statement
-from gecent.core.errors import NotYetSupported
+from gecent.core.errors import Diagnostic, NotYetSupported
 from gecent.core.motion.cycles import CYCLE_TYPES, parse_cycle
 from gecent.core.statements.feed import program_feed
+
+# the control's own cycle block holds G, Z and R only (CYCLGP, 001 L30164-30178)
+CONTROL_CYCLE_KEEPS = "CYCLE {} NOT OUTPUT: THE CONTROL'S OWN CYCLE DOES IT"
 
 if TYPE_CHECKING:
     from gecent.core.run import Run
@@ -37,6 +40,18 @@ def cycle(run: Run, statement: Statement) -> None:
             f"CYCLE/{parsed.kind} on a positioning machine without its G code TABLEG({cell})",
             statement.where,
         )
+    if positioning:
+        unsent = [
+            name
+            for name, given in (
+                ("STEP", parsed.step is not None),
+                ("DWELL", parsed.dwell > 0),
+                ("RETURN", parsed.return_level is not None),
+            )
+            if given
+        ]
+        if unsent:
+            run.warn(Diagnostic(CONTROL_CYCLE_KEEPS.format(", ".join(unsent)), statement.where))
     if not positioning and machine.g_code(cell) is not None:
         raise NotYetSupported(
             f"CYCLE/{parsed.kind} by the control's own cycle (TABLEG({cell}), option 1)",
