@@ -68,6 +68,7 @@ def restat(run: Run, record: int) -> None:
             command = conditions.due(SPINDLE_COMMAND)
             if command is not None:
                 state.pending.spindle = command
+                state.pending.rpm = state.spindle.speed
             output.store_m(direction)
             output.output(Block(Code.NONMOTION, record))
             state.spindle.on = True

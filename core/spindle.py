@@ -523,6 +523,7 @@ class SpindleElement:
                 # protective shifting: each intermediate speed in a block of its own, with
                 # its dwell (001 L14773-14800, L15080-15111)
                 self.state.pending.spindle = step.command
+                self.state.pending.rpm = None
                 if step.dwell:
                     block = self.output.dwell(step.dwell)
                     block.record = record
@@ -545,6 +546,7 @@ class SpindleElement:
         if selection is not None:
             spindle.speed, spindle.range = selection.speed, selection.range
             self.state.pending.spindle = selection.command
+            self.state.pending.rpm = selection.speed
             self.state.remember(SPINDLE_COMMAND, selection.command)
             self.state.remember(SPINDLE_RANGE, float(selection.range))
         self.state.remember(SPINDLE_M, machine.m_code(cells[direction]))
@@ -576,6 +578,7 @@ class SpindleElement:
             if not self.has_s_register:
                 raise NotYetSupported("spindle off by S0 (option 127 = 1) without an S register")
             self.state.pending.spindle = 0.0
+            self.state.pending.rpm = 0.0
             self.output.output(Block(Code.NONMOTION, statement.number))
             return
         self.state.remember(SPINDLE_M, None)

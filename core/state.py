@@ -70,6 +70,7 @@ class Pending:
 
     spindle: float | Absent = ABSENT
     m_code: float | Absent = ABSENT
+    rpm: float | None = None  # the speed the waiting S command stands for (listing S-RPM)
 
 
 @dataclass(slots=True)

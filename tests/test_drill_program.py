@@ -96,3 +96,17 @@ def test_the_machine_s_missing_codes_are_reported() -> None:
     notes = [(d.where.record if d.where else None, d.text) for d in result.diagnostics]
     missing = "REQUESTED MISCELLANEOUS FUNCTION CODE IS NOT AVAILABLE ON THIS MACHINE"
     assert notes == [(10, missing), (45, missing)]
+
+
+def test_the_listing_prints_positions_feeds_and_speeds() -> None:
+    """GEOUT1: the absolute columns, F-IPM as made (the bore's 2.5) and S-RPM with each S."""
+    result = posted()
+    machine = result.machine
+    listing = get_plugins().get("printouts", 1).render(machine, result.blocks, result.partno)
+    lines = listing.splitlines()
+    speeds = [line.split()[-1] for line in lines if line.strip().startswith(("010", "022"))]
+    assert speeds == ["1060.", "710."]
+    bore = next(line for line in lines if line.strip().startswith("040  85"))
+    assert bore.split()[-1] == "2.5" and "+1.0000" in bore and "+6.0000" in bore
+    origin = next(line for line in lines if line.startswith("FROM"))
+    assert origin.split()[1:] == ["+0.0000", "+0.0000", "+6.0000"]

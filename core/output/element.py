@@ -134,8 +134,12 @@ class OutputElement:
             command = state.conditions.values.get(SPINDLE_COMMAND)
             if command is not None and command >= 0:
                 state.pending.spindle = command
+                state.pending.rpm = state.spindle.speed
         block.cells[12] = state.pending.spindle
         block.cells[14] = state.pending.m_code
+        if state.pending.spindle is not ABSENT and state.pending.rpm is not None:
+            block.cells[20] = state.pending.rpm  # the speed in RPM, for the listing
+        state.pending.rpm = None
         state.pending.spindle = ABSENT
         state.pending.m_code = ABSENT
         self._emit(block)

@@ -116,7 +116,7 @@ def _place(fields: list[tuple[Column, str]]) -> str:
 
 
 def _absolute(value: float, decimals: int) -> str:
-    return f"{value:+.{decimals}f}"
+    return f"{round(value, decimals) + 0.0:+.{decimals}f}"  # + 0.0: no "-0.0000"
 
 
 # the numeric blocks GEOUT1 lays out in columns (text blocks print their text)
@@ -178,6 +178,8 @@ class Geout1:
                         fields.append((column, _absolute(value, fmt.right)))
             elif key == "F-IPM" and block.cells[19] is not ABSENT:
                 fields.append((column, f"{float(block.cells[19]):.3f}".rstrip("0")))
+            elif key == "S-RPM" and block.cells[20] is not ABSENT:
+                fields.append((column, f"{float(block.cells[20]):.1f}".rstrip("0")))
             elif key == "CLREC" and block.record is not None:
                 fields.append((column, str(block.record)))
         text = _place(fields)
