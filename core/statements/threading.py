@@ -103,12 +103,13 @@ def couple(run: Run, statement: Statement) -> None:
 
 
 def _lowest_in_range(run: Run) -> float | None:
-    """The lowest listed speed of the range the spindle turns in (SRTAB)."""
-    ranges = run.machine.spindle_ranges()
+    """The lowest speed of the range the spindle turns in, as its spindle type says (types
+    13, 15, 17 and 18 keep more than speeds in SRTAB)."""
+    spindle_type = run.spindle.spindle_type
     number = run.state.spindle.range
-    if not ranges or number > len(ranges) or not ranges[number - 1]:
+    if spindle_type is None or not 1 <= number <= spindle_type.range_count(run.machine):
         return None
-    return min(ranges[number - 1])
+    return spindle_type.speed_limits(run.machine, number)[0]
 
 
 HANDLERS = {
