@@ -23,6 +23,7 @@ from gecent.core.families import FAMILIES, MachinePack
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.machine.describe import describe_machine, machine_as_dict
 from gecent.core.output.files import write_atomically
+from gecent.core.output.jsonlines import json_lines
 from gecent.core.output.marks import stand_in
 from gecent.core.output.punch import punch
 from gecent.core.output.tape import tape_image
@@ -208,6 +209,12 @@ def machine_show(key: str, show_all: bool, as_json: bool) -> None:
     metavar="CODE FILE",
     help="Also write the punched tape, one byte per frame, in EIA RS-244 or ASCII RS-358 code.",
 )
+@click.option(
+    "--json",
+    "as_json",
+    is_flag=True,
+    help="Also print the blocks on standard output as JSON lines, one object per block.",
+)
 @_reporting_errors
 def post(
     input_path: str,
@@ -215,6 +222,7 @@ def post(
     tape_path: str | None,
     listing_path: str | None,
     punch_to: tuple[str, str] | None,
+    as_json: bool,
 ) -> None:
     """Postprocess a CL file into a tape image and a printed listing."""
     plugins = _plugins()
@@ -247,6 +255,9 @@ def post(
         write_atomically(punch_to[1], frames)  # type: ignore[index]
     for diagnostic in result.diagnostics:
         click.echo(str(diagnostic), err=True)
+    if as_json:
+        for line in json_lines(result.blocks, machine):
+            click.echo(line)
 
 
 def _write_stopped_listing(

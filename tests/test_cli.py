@@ -122,3 +122,21 @@ def test_malformed_statement_is_exit_2_with_position(tmp_path: Path) -> None:
     source.write_text("PARTNO X\nGOTO / 1, 2,, 3\nFINI\n")
     code, _, err = run("post", str(source))
     assert code == 2 and err.startswith(f"{source}:2:13: error: expected a value before ','")
+
+
+def test_post_json_prints_one_object_per_block(tmp_path: Path) -> None:
+    """`gecent post --json`: the blocks as JSON lines, their tape lines equal to the tape."""
+    example = Path(__file__).resolve().parents[1] / "examples" / "drill_mach24.apt"
+    tape = tmp_path / "d.tape"
+    code, out, _ = run(
+        "post", str(example), "-o", str(tape), "--listing", str(tmp_path / "d.lis"), "--json"
+    )
+    assert code == 0
+    blocks = [json.loads(line) for line in out.splitlines()]
+    punched = [b["tape"] for b in blocks if b["tape"] is not None]
+    assert punched == tape.read_text().splitlines()
+    cycle = next(b for b in blocks if b["code"] == "POSITION_Z")
+    assert cycle["words"] == {"N": "015", "G": "81", "Z": "+06.1500", "F": "09", "R": "+05.9"}
+    assert cycle["feed"] == 4.5 and cycle["position"] == [1.0, 1.0, 6.0]
+    speed = next(b for b in blocks if b["rpm"] is not None)
+    assert (speed["record"], speed["rpm"], speed["tape"]) == (10, 1060.0, "N010S07")
