@@ -6,7 +6,7 @@ import io
 import json
 import os
 import sys
-from collections.abc import Callable, Iterable
+from collections.abc import Callable, Iterable, Iterator
 from functools import wraps
 from pathlib import Path
 from typing import Any, TypeVar
@@ -230,7 +230,7 @@ def post(
     if machine_key is not None and (machine_key.endswith(".toml") or os.sep in machine_key):
         override = _load_machine(plugins, machine_key)
     try:
-        result = run_post(input_path, plugins, override)
+        result = run_post(input_path, plugins, override, _progress(input_path))
     except GecentError as error:
         if isinstance(error.partial, RunResult):  # a fatal error: the listing and its dump
             _write_stopped_listing(plugins, error.partial, input_path, listing_path)
@@ -258,6 +258,27 @@ def post(
     if as_json:
         for line in json_lines(result.blocks, machine):
             click.echo(line)
+
+
+def _progress(input_path: str) -> Callable[[Iterator[Record]], Iterator[Record]] | None:
+    """A progress bar on standard error while a long post runs, only on a terminal: the
+    total is the text file's line count (records are at most that), none for binary."""
+    if not sys.stderr.isatty():
+        return None
+    from tqdm import tqdm
+
+    total: int | None = None
+    with open(input_path, "rb") as handle:
+        head = handle.read(65536)
+        if b"\0" not in head:  # a text CL file
+            total = head.count(b"\n")
+            for chunk in iter(lambda: handle.read(1 << 20), b""):
+                total += chunk.count(b"\n")
+
+    def watch(records: Iterator[Record]) -> Iterator[Record]:
+        yield from tqdm(records, total=total, unit=" records", leave=False, file=sys.stderr)
+
+    return watch
 
 
 def _write_stopped_listing(

@@ -7,7 +7,7 @@ supported" error naming the statement and its line; nothing is written then.
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
 
 from gecent.core.cl.records import (
@@ -394,12 +394,17 @@ _TYPE_NAMES = {"MOTION": "5000", "CIRCLE": "3000", "ARELEM": "6000", "MULTIAX": 
 
 
 def post(
-    path: str, plugins: PluginSet, machine_override: str | MachineDefinition | None = None
+    path: str,
+    plugins: PluginSet,
+    machine_override: str | MachineDefinition | None = None,
+    watch: Callable[[Iterator[Record]], Iterator[Record]] | None = None,
 ) -> RunResult:
-    """Select the machine (first pass up to MACHIN, as GEINIT does), then process the file."""
+    """Select the machine (first pass up to MACHIN, as GEINIT does), then process the file;
+    ``watch`` may wrap the records of the main pass (a progress bar)."""
     request, notes = first_machin(read_cl(path, plugins))
     machine = resolve_machine(plugins, machine_override, request)
     run = Run(machine, plugins)
     for note in notes:
         run.warn(note)
-    return run.process(read_cl(path, plugins))
+    records = read_cl(path, plugins)
+    return run.process(watch(records) if watch is not None else records)

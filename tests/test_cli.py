@@ -5,6 +5,7 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
+import pytest
 from click.testing import CliRunner
 from gecent.core.cli import main
 
@@ -140,3 +141,16 @@ def test_post_json_prints_one_object_per_block(tmp_path: Path) -> None:
     assert cycle["feed"] == 4.5 and cycle["position"] == [1.0, 1.0, 6.0]
     speed = next(b for b in blocks if b["rpm"] is not None)
     assert (speed["record"], speed["rpm"], speed["tape"]) == (10, 1060.0, "N010S07")
+
+
+def test_progress_bar_only_on_a_terminal(monkeypatch: pytest.MonkeyPatch) -> None:
+    """A progress bar on standard error while posting on a terminal, never in a pipe."""
+    from gecent.core import cli
+
+    example = str(Path(__file__).resolve().parents[1] / "examples" / "hello.apt")
+    monkeypatch.setattr(cli.sys.stderr, "isatty", lambda: False, raising=False)
+    assert cli._progress(example) is None
+    monkeypatch.setattr(cli.sys.stderr, "isatty", lambda: True, raising=False)
+    watch = cli._progress(example)
+    assert watch is not None
+    assert list(watch(iter(range(3)))) == [0, 1, 2]  # type: ignore[arg-type]
