@@ -19,10 +19,8 @@ does FEDRAT/n,IPM under option 2 = 1.
 from __future__ import annotations
 
 from collections.abc import Callable
-from dataclasses import dataclass, field
-from itertools import pairwise
+from dataclasses import dataclass
 from math import inf
-from typing import Protocol, runtime_checkable
 
 from gecent.core.cl.records import Arg, Statement, Word
 from gecent.core.errors import (
@@ -51,210 +49,21 @@ from gecent.core.motion.sfm import (
 from gecent.core.output.block import Block, Code
 from gecent.core.output.element import OutputElement
 from gecent.core.reinstate import SFM, SPINDLE_COMMAND, SPINDLE_M, SPINDLE_RANGE
+from gecent.core.spindle_types import (
+    CCLW,
+    CLW,
+    SAME_SPEED,
+    Running,
+    SpindleRequest,
+    SpindleType,
+)
 from gecent.core.state import PostState
 
-CLW, CCLW = 1, -1
+TOO_FAST_FOR_THREADING = "SPINDLE SPEED IS TOO HIGH FOR THREADING"
 MACFUN_TYPE = 7  # option 19 = 7: the machine's MACFUN computes S (§4.5.8)
 _DIRECTION_WORDS = {"CLW": CLW, "CCLW": CCLW}
 _M_CELL = {CLW: 4, CCLW: 5}
 _OFF_CELL = 6
-
-
-@dataclass(frozen=True, slots=True)
-class SpindleStep:
-    """An intermediate speed a type outputs before the requested one (protective multiple
-    shifting, §4.5.3.1 and §4.5.11.1): its S command, the range it turns in, and the dwell
-    that follows it in the same block (None: a plain non-motion block)."""
-
-    command: float
-    range: int
-    dwell: float | None = None
-
-
-@dataclass(frozen=True, slots=True)
-class SpindleSelection:
-    """What a spindle type makes of a requested speed.
-
-    ``speed`` is the speed the spindle will turn, ``command`` the S command, ``range`` the
-    range, ``row`` the 0-based row of the speed in its range (None for variable types) and
-    ``comments`` the manual's diagnostics. M codes, each a TABLEM cell:
-
-    * ``direction_cells`` (by CLW/CCLW): combined range-and-direction codes that replace
-      TABLEM 4/5, output when the spindle starts, reverses or changes range;
-    * ``range_cell``: a range-only (or mode) code, output when its code differs from the
-      last one output (types 3a, 14, 15, 16);
-
-    ``steps`` are intermediate speeds output first (protective shifting); ``dwell_after`` a
-    dwell block after the speed block (type 12's cross-over); ``stop_cell`` and
-    ``stop_comment`` a stop block and a comment before the speed block (type 19).
-    """
-
-    speed: float
-    command: float
-    range: int = 1
-    comments: tuple[str, ...] = field(default=())
-    direction_cells: dict[int, int] | None = None
-    range_cell: int | None = None
-    steps: tuple[SpindleStep, ...] = field(default=())
-    dwell_after: float | None = None
-    stop_cell: int | None = None
-    stop_comment: str | None = None
-    row: int | None = None
-
-
-@dataclass(frozen=True, slots=True)
-class Running:
-    """The spindle as it turns before the statement: its speed and range."""
-
-    speed: float
-    range: int
-
-
-@dataclass(frozen=True, slots=True)
-class SpindleRequest:
-    """A SPINDL speed request as the kernel hands it to the type: the speed (RPM), the
-    programmed RANGE,n (None: the type chooses), the direction (CLW = 1, CCLW = -1), the
-    spindle as it turns (None when stopped), the tool in use (type 9), the head (type 13)
-    and the machine's MACFUN handler lookup (type 7)."""
-
-    speed: float
-    range: int | None = None
-    direction: int = 1
-    running: Running | None = None
-    tool: int | None = None
-    head: int = 1
-    macfun: Callable[[HookPoint], MacfunHandler | None] | None = None
-
-
-@runtime_checkable
-class SpindleType(Protocol):
-    @property
-    def number(self) -> int: ...
-
-    @property
-    def name(self) -> str: ...
-
-    @property
-    def section(self) -> str: ...
-
-    def select(self, machine: MachineDefinition, request: SpindleRequest) -> SpindleSelection: ...
-
-    def range_count(self, machine: MachineDefinition) -> int:
-        """How many ranges the type offers on this machine (RANGE,n accepts 1..this)."""
-        ...
-
-    def speed_limits(self, machine: MachineDefinition, range_number: int) -> tuple[float, float]:
-        """The lowest and highest speed of a range (SFM's "cannot start" test)."""
-        ...
-
-    def table_speeds(
-        self, machine: MachineDefinition, range_number: int
-    ) -> tuple[float, ...] | None:
-        """The discrete speeds of a range, ascending, which SFM steps through; None for a
-        type that is variable in SFM (types 1, 10, 18: SFM steps by option 15)."""
-        ...
-
-
-LOWEST_OUTPUT = "LOWEST SPEED IN RANGE IS OUTPUT."
-NOT_FOUND = "SPINDLE SPEED COULD NOT BE FOUND."
-TOO_FAST_FOR_THREADING = "SPINDLE SPEED IS TOO HIGH FOR THREADING"
-NO_DIRECTION = "NO DIRECTION GIVEN IN FIRST SPINDLE STATEMENT"
-_EXACT = 1e-6  # RPM: a table speed this close to the request is the request
-
-
-def lowest_range(ranges: tuple[tuple[float, ...], ...], speed: float) -> int | None:
-    """LOCRNG: the lowest range (1-based) whose speeds span ``speed`` (001 L33927-33960)."""
-    for number, speeds in enumerate(ranges, start=1):
-        if speeds and min(speeds) - _EXACT <= speed <= max(speeds) + _EXACT:
-            return number
-    return None
-
-
-def limited(speed: float, low: float, high: float) -> tuple[float, tuple[str, ...]]:
-    """A speed outside the table: the nearer listed extreme, with DSRROW's comment 80 or
-    63 (001 L14588-14590, L30766-30777)."""
-    if speed < low - _EXACT:
-        return low, (LOWEST_OUTPUT,)
-    if speed > high + _EXACT:
-        return high, (NOT_FOUND,)
-    return speed, ()
-
-
-@dataclass(frozen=True, slots=True)
-class TableChoice:
-    """DSRROW's answer: the range (1-based), the row (0-based within the range), the table
-    speed chosen, and comment 80 or 63 when the request lay outside the range."""
-
-    range: int
-    row: int
-    speed: float
-    comments: tuple[str, ...] = ()
-
-
-def range_for(ranges: tuple[tuple[float, ...], ...], speed: float, requested: int | None) -> int:
-    """The range a speed is looked up in: the programmed one, else the lowest range that
-    spans it (LOCRNG), else the range with the nearest end."""
-    if requested is not None:
-        return max(1, min(requested, len(ranges)))
-    number = lowest_range(ranges, speed)
-    if number is not None:
-        return number
-    # outside every range: the range whose end is nearest (the table's own end beyond it,
-    # the nearer neighbour in a gap between ranges; a tie takes the lower range)
-    return min(
-        (n for n, speeds in enumerate(ranges, start=1) if speeds),
-        key=lambda n: (min(abs(speed - s) for s in (ranges[n - 1][0], ranges[n - 1][-1])), n),
-    )
-
-
-def choose_speed(
-    ranges: tuple[tuple[float, ...], ...],
-    speed: float,
-    requested_range: int | None,
-    selection_rule: float,
-) -> TableChoice:
-    """DSRROW (001 L30726-30790, §4.5 common rules): the range by :func:`range_for`, then
-    the exact table speed, or by option 90 (``selection_rule``) the next lower (-1), the
-    closest (0; a tie takes the lower) or the next higher (+1) speed; outside the range its
-    nearer end with comment 80 (below) or 63 (above). Speeds ascend within a range."""
-    number = range_for(ranges, speed, requested_range)
-    speeds = ranges[number - 1]
-    wanted, comments = limited(speed, speeds[0], speeds[-1])
-    if comments:
-        row = 0 if wanted == speeds[0] else len(speeds) - 1
-        return TableChoice(number, row, speeds[row], comments)
-    for row, table_speed in enumerate(speeds):
-        if abs(table_speed - wanted) <= _EXACT:
-            return TableChoice(number, row, table_speed)
-    above = next(row for row, table_speed in enumerate(speeds) if table_speed > wanted)
-    below = above - 1
-    if selection_rule < 0:
-        row = below
-    elif selection_rule > 0:
-        row = above
-    else:
-        row = above if speeds[above] - wanted < wanted - speeds[below] else below
-    return TableChoice(number, row, speeds[row])
-
-
-def check_ascending(
-    machine: MachineDefinition, ranges: tuple[tuple[float, ...], ...], kind: str
-) -> None:
-    """Table types scan each range upward: no table, or a range empty or out of order, is
-    a machine-file error."""
-    if not ranges:
-        raise MachineDefinitionError(
-            machine.origin, "spindle_table", "speeds", f"{kind} needs a table of speeds"
-        )
-    for number, speeds in enumerate(ranges, start=1):
-        if not speeds or any(b < a for a, b in pairwise(speeds)):
-            raise MachineDefinitionError(
-                machine.origin,
-                "spindle_table",
-                "speeds",
-                f"{kind}: range {number} must hold its speeds in ascending order; "
-                f"found {list(speeds)}",
-            )
 
 
 class SpindleElement:
@@ -432,7 +241,7 @@ class SpindleElement:
         waits for the piece's own block (SPNCOM rides in the block OUTPUT emits next); then
         TSTSAF's feed, F_IPM = F_IPR x S in IPR mode, within FRMAX and MAXIPM."""
         spindle = self.state.spindle
-        if not spindle.on or spindle.speed is None or abs(spindle.speed - speed) > _EXACT:
+        if not spindle.on or spindle.speed is None or abs(spindle.speed - speed) > SAME_SPEED:
             self._on(where, record, speed, self.state.sfm.locked_range, [], ride=True)
         feed = self.state.feed
         assert spindle.speed is not None

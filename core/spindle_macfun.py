@@ -23,7 +23,7 @@ from dataclasses import dataclass
 from gecent.core.errors import MachineDefinitionError
 from gecent.core.families import HookPoint, HookResult
 from gecent.core.machine.definition import MachineDefinition
-from gecent.core.spindle import (
+from gecent.core.spindle_types import (
     SpindleRequest,
     SpindleSelection,
     TableChoice,

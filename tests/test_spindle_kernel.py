@@ -8,7 +8,13 @@ from gecent.core.errors import MachineDefinitionError, NotYetSupported
 from gecent.core.machine.loader import standard_machine
 from gecent.core.output.tape import tape_lines
 from gecent.core.plugins import get_plugins
-from gecent.core.spindle import LOWEST_OUTPUT, NOT_FOUND, check_ascending, choose_speed, range_for
+from gecent.core.spindle_types import (
+    LOWEST_OUTPUT,
+    NOT_FOUND,
+    check_ascending,
+    choose_speed,
+    range_for,
+)
 
 from tests.test_post_linear import post
 

@@ -12,7 +12,7 @@ from gecent.core.machine.definition import MachineDefinition
 from gecent.core.machine.loader import load_machine_text
 from gecent.core.output.tape import tape_lines
 from gecent.core.plugins import get_plugins
-from gecent.core.spindle import (
+from gecent.core.spindle_types import (
     CCLW,
     CLW,
     Running,

@@ -19,7 +19,8 @@ from gecent.core.output.tape import tape_lines
 from gecent.core.plugins import get_plugins, load_module_plugins
 from gecent.core.run import Run
 from gecent.core.run import post as post_file
-from gecent.core.spindle import (
+from gecent.core.spindle_macfun import SpindleCodeContext
+from gecent.core.spindle_types import (
     CCLW,
     CLW,
     LOWEST_OUTPUT,
@@ -29,7 +30,6 @@ from gecent.core.spindle import (
     SpindleSelection,
     SpindleType,
 )
-from gecent.core.spindle_macfun import SpindleCodeContext
 from gecent.plugins.spindles.type12 import speed_command
 
 from tests.test_post_linear import post

@@ -21,7 +21,7 @@ from gecent.core.motion.rounding import to_steps
 from gecent.core.motion.segments import segment_count, segments
 from gecent.core.motion.sfm import surface_cuts
 from gecent.core.output.block import Block, Code
-from gecent.core.state import PostState
+from gecent.core.state import Position, PostState
 
 TWO_AXIS = frozenset({11.0, 101.0, 110.0})  # option 22: the machine has two linear axes
 
@@ -29,6 +29,15 @@ TWO_AXIS = frozenset({11.0, 101.0, 110.0})  # option 22: the machine has two lin
 def godlta_delta(values: tuple[float, ...]) -> tuple[float, ...]:
     """GODLTA's increments: dx, dy, dz, or one value along the tool axis z."""
     return (0.0, 0.0, values[0]) if len(values) == 1 else values[:3]
+
+
+def godlta_point(position: Position, record: Motion) -> tuple[float, ...]:
+    """GODLTA adds its increments to the previous point (001 L4103-4128); TRANS is in the
+    previous point already, so the CL point is that less TRANS. One value moves along the
+    tool axis (z)."""
+    delta = godlta_delta(record.points[0])
+    previous = position.previous_part
+    return tuple(previous[a] + delta[a] - position.translation[a] for a in range(3))
 
 
 class LinearMotion:
@@ -80,12 +89,7 @@ class LinearMotion:
         self._goto(record, self.godlta_point(record))
 
     def godlta_point(self, record: Motion) -> tuple[float, ...]:
-        """GODLTA adds its increments to the previous point (001 L4103-4128); TRANS is in the
-        previous point already. One value moves along the tool axis (z)."""
-        delta = godlta_delta(record.points[0])
-        previous = self.state.position.previous_part
-        tx, ty, tz = self.state.position.translation
-        return tuple(previous[axis] + delta[axis] - (tx, ty, tz)[axis] for axis in range(3))
+        return godlta_point(self.state.position, record)
 
     def _goto(self, record: Motion, point: tuple[float, ...]) -> None:
         if len(point) != 3:

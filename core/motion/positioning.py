@@ -29,7 +29,7 @@ from gecent.core.absent import ABSENT, Absent
 from gecent.core.cl.records import Motion, MotionSubtype
 from gecent.core.errors import Diagnostic, InputError, NotYetSupported
 from gecent.core.motion.cycles import CYCLE_TYPES, Cycle
-from gecent.core.motion.linear import godlta_delta
+from gecent.core.motion.linear import godlta_point
 from gecent.core.motion.rounding import to_steps
 from gecent.core.output.block import Block, Code
 from gecent.core.state import PostState
@@ -87,10 +87,7 @@ class PositioningMotion:
     def _points(self, record: Motion) -> list[tuple[float, ...]]:
         if record.subtype is not MotionSubtype.GODLTA:
             return list(record.points)
-        delta = godlta_delta(record.points[0])
-        previous = self.state.position.previous_part
-        tx, ty, tz = self.state.position.translation
-        return [tuple(previous[a] + delta[a] - (tx, ty, tz)[a] for a in range(3))]
+        return [godlta_point(self.state.position, record)]
 
     def _machine_point(self, point: tuple[float, ...]) -> tuple[list[float], list[int]]:
         tx, ty, tz = self.state.position.translation

@@ -21,7 +21,12 @@ from dataclasses import dataclass
 from gecent.core.errors import MachineDefinitionError
 from gecent.core.hookspecs import Register, hookimpl
 from gecent.core.machine.definition import MachineDefinition
-from gecent.core.spindle import SpindleRequest, SpindleSelection, check_ascending, choose_speed
+from gecent.core.spindle_types import (
+    SpindleRequest,
+    SpindleSelection,
+    TableSpindle,
+    choose_speed,
+)
 
 KIND = "spindle type 0"
 
@@ -47,20 +52,11 @@ speeds = [
 
 
 @dataclass(frozen=True)
-class CombinationRangeAndRowSpindle:
+class CombinationRangeAndRowSpindle(TableSpindle):
     number: int = 0
     name: str = "combination range and row"
     section: str = "§4.5.1"
     manual_example: str = MANUAL_EXAMPLE
-
-    def ranges(self, machine: MachineDefinition) -> tuple[tuple[float, ...], ...]:
-        ranges = machine.spindle_ranges()
-        if not ranges:
-            raise MachineDefinitionError(
-                machine.origin, "spindle_table", "speeds", f"{KIND} needs a table of speeds"
-            )
-        check_ascending(machine, ranges, KIND)
-        return ranges
 
     def row_field(self, machine: MachineDefinition, rows: int) -> int:
         """TYPE00's K: the range number is multiplied by 10, or by 100 when a range holds
@@ -78,18 +74,6 @@ class CombinationRangeAndRowSpindle:
                 f"{increment:g}",
             )
         return field
-
-    def range_count(self, machine: MachineDefinition) -> int:
-        return len(self.ranges(machine))
-
-    def speed_limits(self, machine: MachineDefinition, range_number: int) -> tuple[float, float]:
-        speeds = self.ranges(machine)[range_number - 1]
-        return speeds[0], speeds[-1]
-
-    def table_speeds(
-        self, machine: MachineDefinition, range_number: int
-    ) -> tuple[float, ...] | None:
-        return self.ranges(machine)[range_number - 1]
 
     def select(self, machine: MachineDefinition, request: SpindleRequest) -> SpindleSelection:
         ranges = self.ranges(machine)

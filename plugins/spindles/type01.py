@@ -15,7 +15,7 @@ from gecent.core.errors import MachineDefinitionError
 from gecent.core.feed.magic3 import magic3
 from gecent.core.hookspecs import Register, hookimpl
 from gecent.core.machine.definition import MachineDefinition
-from gecent.core.spindle import SpindleRequest, SpindleSelection, limited
+from gecent.core.spindle_types import SpindleRequest, SpindleSelection, limited
 
 # One range of a minimum and a maximum speed (option 7 = 1, option 8 = 2, 001 L14646-14654);
 # the limits span the manual's examples 137.2 RPM -> S614 and 0.0123 RPM -> S212 and reach

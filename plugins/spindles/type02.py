@@ -33,11 +33,11 @@ from dataclasses import dataclass
 from gecent.core.errors import MachineDefinitionError
 from gecent.core.hookspecs import Register, hookimpl
 from gecent.core.machine.definition import MachineDefinition
-from gecent.core.spindle import (
+from gecent.core.spindle_types import (
     SpindleRequest,
     SpindleSelection,
     SpindleStep,
-    check_ascending,
+    TableSpindle,
     choose_speed,
 )
 
@@ -75,20 +75,11 @@ def _whole(machine: MachineDefinition, option: int, low: float, rule: str) -> in
 
 
 @dataclass(frozen=True)
-class AssociatedSpeedCodeSpindle:
+class AssociatedSpeedCodeSpindle(TableSpindle):
     number: int = 2
     name: str = "associated speed code"
     section: str = "§4.5.3"
     manual_example: str = MANUAL_EXAMPLE
-
-    def ranges(self, machine: MachineDefinition) -> tuple[tuple[float, ...], ...]:
-        ranges = machine.spindle_ranges()
-        if not ranges:
-            raise MachineDefinitionError(
-                machine.origin, "spindle_table", "speeds", f"{KIND} needs a table of speeds"
-            )
-        check_ascending(machine, ranges, KIND)
-        return ranges
 
     def codes(
         self, machine: MachineDefinition, ranges: tuple[tuple[float, ...], ...]
@@ -125,18 +116,6 @@ class AssociatedSpeedCodeSpindle:
             "option 137 is the shift-point row (a whole number >= 1, counted from the lowest "
             "speed) or 0; a negative value is type 10's shift speed",
         )
-
-    def range_count(self, machine: MachineDefinition) -> int:
-        return len(self.ranges(machine))
-
-    def speed_limits(self, machine: MachineDefinition, range_number: int) -> tuple[float, float]:
-        speeds = self.ranges(machine)[range_number - 1]
-        return speeds[0], speeds[-1]
-
-    def table_speeds(
-        self, machine: MachineDefinition, range_number: int
-    ) -> tuple[float, ...] | None:
-        return self.ranges(machine)[range_number - 1]
 
     def select(self, machine: MachineDefinition, request: SpindleRequest) -> SpindleSelection:
         ranges = self.ranges(machine)

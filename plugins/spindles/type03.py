@@ -25,13 +25,14 @@ from dataclasses import dataclass
 from gecent.core.errors import MachineDefinitionError
 from gecent.core.hookspecs import Register, hookimpl
 from gecent.core.machine.definition import MachineDefinition
-from gecent.core.spindle import (
+from gecent.core.spindle_types import (
     CCLW,
     CLW,
     SpindleRequest,
     SpindleSelection,
-    check_ascending,
+    TableSpindle,
     choose_speed,
+    speed_table,
 )
 
 KIND = "spindle type 3"
@@ -73,18 +74,14 @@ def range_cells(number: int) -> dict[int, int]:
 
 
 @dataclass(frozen=True)
-class RangeCodeSpindle:
+class RangeCodeSpindle(TableSpindle):
     number: int = 3
     name: str = "associated speed code with range and/or direction M codes"
     section: str = "§4.5.4"
     manual_example: str = MANUAL_EXAMPLE
 
     def ranges(self, machine: MachineDefinition) -> tuple[tuple[float, ...], ...]:
-        ranges = machine.spindle_ranges()
-        if not ranges:
-            raise MachineDefinitionError(
-                machine.origin, "spindle_table", "speeds", f"{KIND} needs a table of speeds"
-            )
+        ranges = speed_table(machine, KIND)
         if len(ranges) > MOST_RANGES:
             raise MachineDefinitionError(
                 machine.origin,
@@ -92,7 +89,6 @@ class RangeCodeSpindle:
                 7,
                 f"{KIND} codes at most {MOST_RANGES} ranges in TABLEM 71..82; found {len(ranges)}",
             )
-        check_ascending(machine, ranges, KIND)
         return ranges
 
     def range_only(self, machine: MachineDefinition, count: int) -> bool:
@@ -129,18 +125,6 @@ class RangeCodeSpindle:
                     "and 5 absent for combined range-and-direction codes",
                 )
         return range_only
-
-    def range_count(self, machine: MachineDefinition) -> int:
-        return len(self.ranges(machine))
-
-    def speed_limits(self, machine: MachineDefinition, range_number: int) -> tuple[float, float]:
-        speeds = self.ranges(machine)[range_number - 1]
-        return speeds[0], speeds[-1]
-
-    def table_speeds(
-        self, machine: MachineDefinition, range_number: int
-    ) -> tuple[float, ...] | None:
-        return self.ranges(machine)[range_number - 1]
 
     def select(self, machine: MachineDefinition, request: SpindleRequest) -> SpindleSelection:
         ranges = self.ranges(machine)

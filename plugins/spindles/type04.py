@@ -23,13 +23,14 @@ from gecent.core.errors import MachineDefinitionError, NotYetSupported
 from gecent.core.feed.magic3 import magic3
 from gecent.core.hookspecs import Register, hookimpl
 from gecent.core.machine.definition import MachineDefinition
-from gecent.core.spindle import (
+from gecent.core.spindle_types import (
     CCLW,
     CLW,
     SpindleRequest,
     SpindleSelection,
-    check_ascending,
+    TableSpindle,
     choose_speed,
+    speed_table,
 )
 
 KIND = "spindle type 4"
@@ -69,18 +70,14 @@ def range_cells(number: int) -> dict[int, int]:
 
 
 @dataclass(frozen=True)
-class QuasiEiaRangeSpindle:
+class QuasiEiaRangeSpindle(TableSpindle):
     number: int = 4
     name: str = "quasi EIA 3-digit code number with range and direction M code"
     section: str = "§4.5.5"
     manual_example: str = MANUAL_EXAMPLE
 
     def ranges(self, machine: MachineDefinition) -> tuple[tuple[float, ...], ...]:
-        ranges = machine.spindle_ranges()
-        if not ranges:
-            raise MachineDefinitionError(
-                machine.origin, "spindle_table", "speeds", f"{KIND} needs a table of speeds"
-            )
+        ranges = speed_table(machine, KIND)
         if len(ranges) > MOST_RANGES:
             raise MachineDefinitionError(
                 machine.origin,
@@ -88,7 +85,6 @@ class QuasiEiaRangeSpindle:
                 7,
                 f"{KIND} codes at most {MOST_RANGES} ranges in TABLEM 71..82; found {len(ranges)}",
             )
-        check_ascending(machine, ranges, KIND)
         if any(magic3(speed) is None or speed <= 0 for speed in ranges[0]):
             raise MachineDefinitionError(
                 machine.origin,
@@ -111,18 +107,6 @@ class QuasiEiaRangeSpindle:
                         f"{KIND}: range {number} needs its range-and-direction M codes in "
                         f"TABLEM {cells[CCLW]} (CCLW) and {cells[CLW]} (CLW)",
                     )
-
-    def range_count(self, machine: MachineDefinition) -> int:
-        return len(self.ranges(machine))
-
-    def speed_limits(self, machine: MachineDefinition, range_number: int) -> tuple[float, float]:
-        speeds = self.ranges(machine)[range_number - 1]
-        return speeds[0], speeds[-1]
-
-    def table_speeds(
-        self, machine: MachineDefinition, range_number: int
-    ) -> tuple[float, ...] | None:
-        return self.ranges(machine)[range_number - 1]
 
     def select(self, machine: MachineDefinition, request: SpindleRequest) -> SpindleSelection:
         ranges = self.ranges(machine)

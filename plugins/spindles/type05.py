@@ -21,7 +21,13 @@ from gecent.core.errors import MachineDefinitionError
 from gecent.core.feed.magic3 import magic3
 from gecent.core.hookspecs import Register, hookimpl
 from gecent.core.machine.definition import MachineDefinition
-from gecent.core.spindle import SpindleRequest, SpindleSelection, check_ascending, choose_speed
+from gecent.core.spindle_types import (
+    SpindleRequest,
+    SpindleSelection,
+    TableSpindle,
+    check_ascending,
+    choose_speed,
+)
 
 NEXT_LOWER = -1.0  # option 90's "next lower speed"
 
@@ -45,15 +51,11 @@ speeds = [
 
 
 @dataclass(frozen=True)
-class DiscreteEiaSpindle:
+class DiscreteEiaSpindle(TableSpindle):
     number: int = 5
     name: str = "discrete EIA 3-digit code number"
     section: str = "§4.5.6"
     manual_example: str = MANUAL_EXAMPLE
-
-    @property
-    def kind(self) -> str:
-        return f"spindle type {self.number}"
 
     def speeds(self, machine: MachineDefinition) -> tuple[float, ...]:
         """The one range of discrete speeds, each codable in magic three."""
@@ -86,18 +88,8 @@ class DiscreteEiaSpindle:
             )
         return speeds
 
-    def range_count(self, machine: MachineDefinition) -> int:
-        self.speeds(machine)
-        return 1
-
-    def speed_limits(self, machine: MachineDefinition, range_number: int) -> tuple[float, float]:
-        speeds = self.speeds(machine)
-        return speeds[0], speeds[-1]
-
-    def table_speeds(
-        self, machine: MachineDefinition, range_number: int
-    ) -> tuple[float, ...] | None:
-        return self.speeds(machine)
+    def ranges(self, machine: MachineDefinition) -> tuple[tuple[float, ...], ...]:
+        return (self.speeds(machine),)
 
     def select(self, machine: MachineDefinition, request: SpindleRequest) -> SpindleSelection:
         speeds = self.speeds(machine)

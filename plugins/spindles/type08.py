@@ -17,7 +17,12 @@ from dataclasses import dataclass
 from gecent.core.errors import MachineDefinitionError
 from gecent.core.hookspecs import Register, hookimpl
 from gecent.core.machine.definition import MachineDefinition
-from gecent.core.spindle import SpindleRequest, SpindleSelection, check_ascending, choose_speed
+from gecent.core.spindle_types import (
+    SpindleRequest,
+    SpindleSelection,
+    TableSpindle,
+    choose_speed,
+)
 
 # The §4.5.9 table: three ranges of five speeds, codes 1..5 (001 L14996-15002).
 MANUAL_EXAMPLE = """
@@ -41,24 +46,11 @@ speeds = [
 
 
 @dataclass(frozen=True)
-class RangeFreeSpeedCodeSpindle:
+class RangeFreeSpeedCodeSpindle(TableSpindle):
     number: int = 8
     name: str = "associated speed code independent of range"
     section: str = "§4.5.9"
     manual_example: str = MANUAL_EXAMPLE
-
-    @property
-    def kind(self) -> str:
-        return f"spindle type {self.number}"
-
-    def ranges(self, machine: MachineDefinition) -> tuple[tuple[float, ...], ...]:
-        ranges = machine.spindle_ranges()
-        if not ranges:
-            raise MachineDefinitionError(
-                machine.origin, "spindle_table", "speeds", f"{self.kind} needs a table of speeds"
-            )
-        check_ascending(machine, ranges, self.kind)
-        return ranges
 
     def row_code(self, machine: MachineDefinition, row: int) -> float:
         """TYPE08: the 1-based row ISPDRO + option 47 - 1, i.e. row (0-based) + option 47."""
@@ -72,18 +64,6 @@ class RangeFreeSpeedCodeSpindle:
                 f"found {increment:g}",
             )
         return float(row + int(increment))
-
-    def range_count(self, machine: MachineDefinition) -> int:
-        return len(self.ranges(machine))
-
-    def speed_limits(self, machine: MachineDefinition, range_number: int) -> tuple[float, float]:
-        speeds = self.ranges(machine)[range_number - 1]
-        return speeds[0], speeds[-1]
-
-    def table_speeds(
-        self, machine: MachineDefinition, range_number: int
-    ) -> tuple[float, ...] | None:
-        return self.ranges(machine)[range_number - 1]
 
     def select(self, machine: MachineDefinition, request: SpindleRequest) -> SpindleSelection:
         ranges = self.ranges(machine)

@@ -22,7 +22,7 @@ from dataclasses import dataclass
 
 from gecent.core.hookspecs import Register, hookimpl
 from gecent.core.machine.definition import MachineDefinition
-from gecent.core.spindle import SpindleRequest, SpindleSelection, choose_speed
+from gecent.core.spindle_types import SpindleRequest, SpindleSelection, choose_speed
 from gecent.plugins.spindles.type08 import RangeFreeSpeedCodeSpindle
 
 LOWEST_RANGE_ASSUMED = "LOWEST RANGE THAT SPINDLE SPEED FALLS IN IS ASSUMED"

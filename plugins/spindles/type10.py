@@ -17,12 +17,13 @@ from gecent.core.errors import MachineDefinitionError
 from gecent.core.feed.magic3 import magic3
 from gecent.core.hookspecs import Register, hookimpl
 from gecent.core.machine.definition import MachineDefinition
-from gecent.core.spindle import (
+from gecent.core.spindle_types import (
     CCLW,
     CLW,
     SpindleRequest,
     SpindleSelection,
     SpindleStep,
+    TableSpindle,
     limited,
     range_for,
 )
@@ -58,7 +59,7 @@ def _code(speed: float) -> float:
 
 
 @dataclass(frozen=True)
-class VariableRangeSpindle:
+class VariableRangeSpindle(TableSpindle):
     number: int = 10
     name: str = "variable speed with range and direction M code"
     section: str = "§4.5.11"
@@ -80,12 +81,6 @@ class VariableRangeSpindle:
                 f"0 < minimum <= maximum <= 9999 RPM; found {list(ranges)}",
             )
         return tuple((r[0], r[1]) for r in ranges)
-
-    def range_count(self, machine: MachineDefinition) -> int:
-        return len(self.ranges(machine))
-
-    def speed_limits(self, machine: MachineDefinition, range_number: int) -> tuple[float, float]:
-        return self.ranges(machine)[range_number - 1]
 
     def table_speeds(
         self, machine: MachineDefinition, range_number: int

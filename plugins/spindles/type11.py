@@ -19,7 +19,13 @@ from gecent.core.absent import ABSENT
 from gecent.core.errors import MachineDefinitionError
 from gecent.core.hookspecs import Register, hookimpl
 from gecent.core.machine.definition import MachineDefinition
-from gecent.core.spindle import SpindleRequest, SpindleSelection, check_ascending, choose_speed
+from gecent.core.spindle_types import (
+    SpindleRequest,
+    SpindleSelection,
+    TableSpindle,
+    check_ascending,
+    choose_speed,
+)
 
 MAX_SPEEDS = 150  # speeds and commands share SRTAB's 300 words
 
@@ -39,7 +45,7 @@ speeds = [5.0, 10.0, 15.0, 20.0, 25.0, 30.0, 35.0, 12.0, 3.0, 27.0, 8.0, 40.0, 1
 
 
 @dataclass(frozen=True)
-class TableLookupSpindle:
+class TableLookupSpindle(TableSpindle):
     number: int = 11
     name: str = "table lookup"
     section: str = "§4.5.12"
@@ -74,17 +80,8 @@ class TableLookupSpindle:
         check_ascending(machine, (speeds,), "spindle type 11")
         return speeds, tuple(commands)
 
-    def range_count(self, machine: MachineDefinition) -> int:
-        return 1
-
-    def speed_limits(self, machine: MachineDefinition, range_number: int) -> tuple[float, float]:
-        speeds, _ = self.table(machine)
-        return speeds[0], speeds[-1]
-
-    def table_speeds(
-        self, machine: MachineDefinition, range_number: int
-    ) -> tuple[float, ...] | None:
-        return self.table(machine)[0]
+    def ranges(self, machine: MachineDefinition) -> tuple[tuple[float, ...], ...]:
+        return (self.table(machine)[0],)
 
     def select(self, machine: MachineDefinition, request: SpindleRequest) -> SpindleSelection:
         speeds, commands = self.table(machine)

@@ -22,7 +22,7 @@ from dataclasses import dataclass
 from gecent.core.errors import MachineDefinitionError
 from gecent.core.hookspecs import Register, hookimpl
 from gecent.core.machine.definition import MachineDefinition
-from gecent.core.spindle import SpindleRequest, SpindleSelection, limited
+from gecent.core.spindle_types import SpindleRequest, SpindleSelection, limited
 
 TENS_FROM = 200.0  # from here up, the command is a multiple of 10 (001 L15175-15179)
 CROSS_OVER = 199.0  # the standard cross-over speed when option 196 = 0 (001 L15181)

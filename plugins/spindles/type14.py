@@ -22,7 +22,13 @@ from dataclasses import dataclass
 from gecent.core.errors import MachineDefinitionError
 from gecent.core.hookspecs import Register, hookimpl
 from gecent.core.machine.definition import MachineDefinition
-from gecent.core.spindle import SpindleRequest, SpindleSelection, choose_speed, range_for
+from gecent.core.spindle_types import (
+    SpindleRequest,
+    SpindleSelection,
+    TableSpindle,
+    choose_speed,
+    range_for,
+)
 
 RANGES_PER_MODE = 10  # ranges 1-10 are mode 1, 11-20 mode 2 (001 L39705-39710)
 MODE_CELLS = {1: 72, 2: 74}  # TABLEM cell of each mode's M code
@@ -60,7 +66,7 @@ def mode_of(range_number: int) -> int:
 
 
 @dataclass(frozen=True)
-class ModeSpindle:
+class ModeSpindle(TableSpindle):
     number: int = 14
     name: str = "speed changes by mode"
     section: str = "§4.5.15"
@@ -105,18 +111,10 @@ class ModeSpindle:
             )
         return ranges
 
-    def range_count(self, machine: MachineDefinition) -> int:
-        return len(self.ranges(machine))
-
     def speed_limits(self, machine: MachineDefinition, range_number: int) -> tuple[float, float]:
         speeds = self.ranges(machine)[range_number - 1]
         # an unused range holds zeros in SRTAB: no speed can start in it
         return (speeds[0], speeds[-1]) if speeds else (0.0, 0.0)
-
-    def table_speeds(
-        self, machine: MachineDefinition, range_number: int
-    ) -> tuple[float, ...] | None:
-        return self.ranges(machine)[range_number - 1]
 
     def select(self, machine: MachineDefinition, request: SpindleRequest) -> SpindleSelection:
         ranges = self.ranges(machine)

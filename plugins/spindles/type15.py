@@ -29,7 +29,7 @@ from gecent.core.absent import ABSENT
 from gecent.core.errors import MachineDefinitionError
 from gecent.core.hookspecs import Register, hookimpl
 from gecent.core.machine.definition import MachineDefinition
-from gecent.core.spindle import CCLW, CLW, SpindleRequest, SpindleSelection, choose_speed
+from gecent.core.spindle_types import CCLW, CLW, SpindleRequest, SpindleSelection, choose_speed
 
 LARGEST_COMMAND = 9999  # four digits: more commands than any S register holds
 _WHOLE = 1e-9  # 60 / 7.5 held as 7.999... is still command 8

@@ -26,11 +26,12 @@ from gecent.core.errors import MachineDefinitionError
 from gecent.core.hookspecs import Register, hookimpl
 from gecent.core.machine.catalogue import STORE_SIZE
 from gecent.core.machine.definition import MachineDefinition
-from gecent.core.spindle import (
+from gecent.core.spindle_types import (
     CCLW,
     CLW,
     SpindleRequest,
     SpindleSelection,
+    TableSpindle,
     check_ascending,
     choose_speed,
 )
@@ -64,7 +65,7 @@ def _direction_cells(number: int) -> dict[int, int]:
 
 
 @dataclass(frozen=True)
-class StoredCodeSpindle:
+class StoredCodeSpindle(TableSpindle):
     number: int = 16
     name: str = "type 3 with non-unit-increasing codes"
     section: str = "§4.5.17"
@@ -124,17 +125,8 @@ class StoredCodeSpindle:
                     + " (TABLEM 71-82 hold six ranges)",
                 )
 
-    def range_count(self, machine: MachineDefinition) -> int:
-        return len(self.table(machine)[0])
-
-    def speed_limits(self, machine: MachineDefinition, range_number: int) -> tuple[float, float]:
-        speeds = self.table(machine)[0][range_number - 1]
-        return speeds[0], speeds[-1]
-
-    def table_speeds(
-        self, machine: MachineDefinition, range_number: int
-    ) -> tuple[float, ...] | None:
-        return self.table(machine)[0][range_number - 1]
+    def ranges(self, machine: MachineDefinition) -> tuple[tuple[float, ...], ...]:
+        return self.table(machine)[0]
 
     def select(self, machine: MachineDefinition, request: SpindleRequest) -> SpindleSelection:
         ranges, codes = self.table(machine)

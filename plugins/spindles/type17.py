@@ -27,7 +27,7 @@ from dataclasses import dataclass
 from gecent.core.errors import MachineDefinitionError
 from gecent.core.hookspecs import Register, hookimpl
 from gecent.core.machine.definition import MachineDefinition
-from gecent.core.spindle import (
+from gecent.core.spindle_types import (
     CCLW,
     CLW,
     SpindleRequest,

@@ -31,10 +31,11 @@ from gecent.core.absent import ABSENT
 from gecent.core.errors import MachineDefinitionError
 from gecent.core.hookspecs import Register, hookimpl
 from gecent.core.machine.definition import MachineDefinition
-from gecent.core.spindle import (
+from gecent.core.spindle_types import (
     SpindleRequest,
     SpindleSelection,
     SpindleStep,
+    TableSpindle,
     check_ascending,
     choose_speed,
 )
@@ -65,7 +66,7 @@ def whole_rpm(speed: float) -> float:
 
 
 @dataclass(frozen=True)
-class GeneratedTableSpindle:
+class GeneratedTableSpindle(TableSpindle):
     number: int = 18
     name: str = "associated code on a generated table (variable in SFM)"
     section: str = "§4.5.19"
@@ -111,13 +112,6 @@ class GeneratedTableSpindle:
             ranges.append(speeds)
         check_ascending(machine, tuple(ranges), "spindle type 18")
         return tuple(ranges)
-
-    def range_count(self, machine: MachineDefinition) -> int:
-        return len(self.ranges(machine))
-
-    def speed_limits(self, machine: MachineDefinition, range_number: int) -> tuple[float, float]:
-        speeds = self.ranges(machine)[range_number - 1]
-        return speeds[0], speeds[-1]
 
     def table_speeds(
         self, machine: MachineDefinition, range_number: int

@@ -27,7 +27,13 @@ from dataclasses import dataclass
 from gecent.core.errors import MachineDefinitionError
 from gecent.core.hookspecs import Register, hookimpl
 from gecent.core.machine.definition import MachineDefinition
-from gecent.core.spindle import SpindleRequest, SpindleSelection, check_ascending, choose_speed
+from gecent.core.spindle_types import (
+    SpindleRequest,
+    SpindleSelection,
+    TableSpindle,
+    check_ascending,
+    choose_speed,
+)
 
 STOP_CELL = 1  # TABLEM(1), program stop
 SPEED_CHANGE = "A SPINDLE SPEED CHANGE OCCURS AT THIS POINT"
@@ -52,7 +58,7 @@ speeds = [
 
 
 @dataclass(frozen=True)
-class RangeStopSpindle:
+class RangeStopSpindle(TableSpindle):
     number: int = 19
     name: str = "stop, comment and new speed on a range change"
     section: str = "§4.5.20"
@@ -79,18 +85,6 @@ class RangeStopSpindle:
                 "machine has more than one range but no program stop code",
             )
         return ranges
-
-    def range_count(self, machine: MachineDefinition) -> int:
-        return len(self.ranges(machine))
-
-    def speed_limits(self, machine: MachineDefinition, range_number: int) -> tuple[float, float]:
-        speeds = self.ranges(machine)[range_number - 1]
-        return speeds[0], speeds[-1]
-
-    def table_speeds(
-        self, machine: MachineDefinition, range_number: int
-    ) -> tuple[float, ...] | None:
-        return self.ranges(machine)[range_number - 1]
 
     def select(self, machine: MachineDefinition, request: SpindleRequest) -> SpindleSelection:
         ranges = self.ranges(machine)

@@ -9,13 +9,12 @@ the Standard Machine, holding its manual section's example table. On that machin
   r); a variable type's range limits do the same within the type's rounding;
 * a sweep of speeds across each range selects non-decreasing speeds with finite commands,
   in the programmed range, each a speed of the table, and names only M codes the machine has;
-* a broken table (emptied, or range 1 out of order) and the Standard Machine's own table
-  under the type's option 19 give a MachineDefinitionError or a selection, never any other
-  exception.
+* a broken table (emptied; range 1 out of order, or, for a type whose SRTAB holds the
+  parameters its speeds are generated from, those parameters negated) and the Standard
+  Machine's own table under the type's option 19 give a MachineDefinitionError or a
+  selection, never any other exception.
 
-A plugin with an empty ``manual_example`` (type 7, whose S code the machine's own MACFUN
-computes, has no table of its own) skips these table checks, saying so; a type that reads
-no SRTAB may declare ``table_free = True`` to skip only the broken-table checks.
+(Type 7 is not a plugin: SPTYPE hands it to the machine's MACFUN, core/spindle_macfun.py.)
 """
 
 from __future__ import annotations
@@ -32,7 +31,7 @@ from gecent.core.errors import MachineDefinitionError
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.machine.loader import load_machine_text, standard_machine
 from gecent.core.plugins import PluginInfo
-from gecent.core.spindle import CLW, SpindleRequest, SpindleSelection, SpindleType
+from gecent.core.spindle_types import CLW, SpindleRequest, SpindleSelection, SpindleType
 
 from .conftest import plugin_params
 from .numbered import check_family_loads, check_numbered_plugin
@@ -51,16 +50,14 @@ def test_family_loads() -> None:
 def test_plugin_contract(info: PluginInfo) -> None:
     check_numbered_plugin("spindles", info)
     assert isinstance(info.obj, SpindleType)
-    assert isinstance(getattr(info.obj, "manual_example", None), str), (
-        "a spindle type declares manual_example (a TOML machine overlay, or '' for none)"
+    assert getattr(info.obj, "manual_example", None), (
+        "a spindle type declares manual_example, a TOML machine overlay with its table"
     )
 
 
 def example(info: PluginInfo) -> tuple[Any, MachineDefinition]:
     plugin = info.obj
-    text = getattr(plugin, "manual_example", "")
-    if not text:
-        pytest.skip(f"spindle type {plugin.number} declares no manual_example (no table)")
+    text = plugin.manual_example
     machine = load_machine_text(text, f"spindle-type{plugin.number:02d}-example.toml")
     assert machine.number_option(19) == plugin.number, "the example selects its own type"
     return plugin, machine
@@ -188,16 +185,9 @@ def every_call(plugin: Any, machine: MachineDefinition, speed: float) -> list[ob
     return [definition_error_or_value(call) for call in calls]
 
 
-def table_using(info: PluginInfo) -> tuple[Any, MachineDefinition]:
-    plugin, machine = example(info)
-    if getattr(plugin, "table_free", False):
-        pytest.skip(f"spindle type {plugin.number} declares table_free: it reads no SRTAB")
-    return plugin, machine
-
-
 @pytest.mark.parametrize("info", **SPINDLES)
 def test_an_empty_table_is_a_machine_definition_error(info: PluginInfo) -> None:
-    plugin, machine = table_using(info)
+    plugin, machine = example(info)
     _, low, _, _ = ranges_of(plugin, machine)[0]
     empty = replace(machine, store=(ABSENT,) * len(machine.store), srtab_top=0)
     outcomes = every_call(plugin, empty, low)
@@ -221,7 +211,7 @@ def out_of_order(machine: MachineDefinition, values: tuple[float, ...]) -> Machi
 
 @pytest.mark.parametrize("info", **SPINDLES)
 def test_a_range_out_of_order_is_a_machine_definition_error(info: PluginInfo) -> None:
-    plugin, machine = table_using(info)
+    plugin, machine = example(info)
     _, low, high, speeds = ranges_of(plugin, machine)[0]
     broken = None
     for run in (speeds, (low, high)):
@@ -229,8 +219,12 @@ def test_a_range_out_of_order_is_a_machine_definition_error(info: PluginInfo) ->
             broken = out_of_order(machine, tuple(run))
             if broken is not None:
                 break
-    if broken is None:
-        pytest.skip(f"spindle type {plugin.number}: range 1 is not stored as a run in SRTAB")
+    if broken is None:  # SRTAB holds generation parameters (type 18): negate them
+        store = [
+            v if v is ABSENT or not 1 <= k <= machine.srtab_top else -float(v)
+            for k, v in enumerate(machine.store)
+        ]
+        broken = replace(machine, store=tuple(store))
     outcomes = every_call(plugin, broken, (low + high) / 2)
     assert outcomes[4] is not None, "SPINDL/s,RANGE,1 reports range 1 out of order"
 
@@ -239,6 +233,6 @@ def test_a_range_out_of_order_is_a_machine_definition_error(info: PluginInfo) ->
 def test_the_standard_table_is_usable_or_reported(info: PluginInfo) -> None:
     """The Standard Machine (one range, 1-300 RPM, no range codes) under the type's option
     19: the type either works with it or says why it cannot, as a machine-file error."""
-    plugin, _ = table_using(info)
+    plugin, _ = example(info)
     machine = standard_machine().with_options({19: float(plugin.number)})
     every_call(plugin, machine, 100.0)
