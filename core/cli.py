@@ -366,3 +366,41 @@ def _print_records(records: Iterable[Record], as_json: bool, write: Callable[[st
 
 if __name__ == "__main__":  # pragma: no cover
     main()
+
+
+@main.command("verify")
+@click.argument("tape_path", metavar="TAPE", type=click.Path(dir_okay=False, exists=True))
+@click.option(
+    "--cl",
+    "cl_file",
+    required=True,
+    type=click.Path(dir_okay=False, exists=True),
+    help="The CL file the tape was posted from.",
+)
+@click.option(
+    "--machine",
+    "machine_key",
+    metavar="ID",
+    help="Machine number, name or .toml file (default: MACHIN/GECENT in the CL file).",
+)
+@click.option(
+    "--tolerance",
+    type=click.FloatRange(min=0.0, min_open=True),
+    default=0.001,
+    show_default=True,
+    help="Largest deviation allowed, in millimetres.",
+)
+@_reporting_errors
+def verify_command(tape_path: str, cl_file: str, machine_key: str | None, tolerance: float) -> None:
+    """Read TAPE with LinuxCNC's rs274 and compare its tool path with the CL path: exit 0 when
+    every CL point is reached in order, 1 at the first mismatch (docs/verify.md)."""
+    from gecent.core.verify.check import verify
+
+    plugins = _plugins()
+    override: str | MachineDefinition | None = machine_key
+    if machine_key is not None and (machine_key.endswith(".toml") or os.sep in machine_key):
+        override = _load_machine(plugins, machine_key)
+    result = verify(tape_path, cl_file, plugins, override, tolerance)
+    for line in result.report():
+        click.echo(line)
+    sys.exit(0 if result.passed else 1)

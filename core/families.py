@@ -48,7 +48,7 @@ def _numbers(first: int, last: int) -> frozenset[int]:
 
 
 # option 19's types 0-19 less type 7, which SPTYPE hands to the machine's MACFUN itself
-SPINDLE_TYPES = _numbers(0, 19) - {7}
+SPINDLE_TYPES = _numbers(0, 20) - {7}  # 20: gecent, S in RPM (modern controls)
 
 FAMILIES: tuple[FamilySpec, ...] = (
     FamilySpec("machines", "register_machines", "name"),

@@ -44,6 +44,7 @@ from gecent.core.machine.selection import (
     resolve_machine,
 )
 from gecent.core.motion.circle import CircularMotion
+from gecent.core.motion.control_cycles import ControlCycles
 from gecent.core.motion.cycles import Cycle, cycle_legs
 from gecent.core.motion.linear import LinearMotion, godlta_delta
 from gecent.core.motion.positioning import PositioningMotion
@@ -98,6 +99,8 @@ class Run:
         self._positioning: PositioningMotion | None = None
         self.cycle: Cycle | None = None  # the canned cycle in force (CYCFLG, ICYTYP)
         self.cycle_first_z: float | None = None
+        self._control_cycles: ControlCycles | None = None
+        self.control_cycles: ControlCycles | None = None  # the control runs the cycle in force
         self._statements = handlers()
         self._statements["UNITS"] = lambda run, statement: run.units.set_units(statement)
 
@@ -112,6 +115,11 @@ class Run:
             if self.machine.number_option(1) != 0:
                 self._output.positioning_feed = self.feed_type
         return self._output
+
+    def control_cycle_element(self) -> ControlCycles:
+        if self._control_cycles is None:
+            self._control_cycles = ControlCycles(self.state, self.output.output)
+        return self._control_cycles
 
     @property
     def feed_type(self) -> FeedType:
@@ -213,7 +221,23 @@ class Run:
         self.result.dump = state_dump(str(error), self.state, self._record)
         error.partial = self.result
 
+    def _open_program(self) -> None:
+        """Option 258: % opens the program, then the option-259 program number."""
+        machine = self.machine
+        if machine.number_option(258) != 1:
+            return
+        self.text_block(Block(Code.INSERT, None, "%"))
+        number = int(machine.number_option(259))
+        if number > 0:
+            self.text_block(Block(Code.INSERT, None, f"O{number:04d}"))
+
+    def _close_program(self, record: Fini) -> None:
+        self.output.finish_program(record.number)
+        if self.machine.number_option(258) == 1:
+            self.text_block(Block(Code.INSERT, record.number, "%"))
+
     def _process(self, records: Iterator[Record]) -> RunResult:
+        self._open_program()
         for record in records:
             self._file = record.file
             self._record = record
@@ -242,6 +266,7 @@ class Run:
             elif isinstance(record, Circle):
                 self.circle.surface(record)  # ignored on a linear-only control (option 9 = 0)
             elif isinstance(record, Fini):
+                self._close_program(record)
                 self.text_block(Block(Code.FINI, record.number))
                 self.finished = True
             elif isinstance(record, Comment | PartText | Surface | Other):
@@ -326,6 +351,13 @@ class Run:
                 hole = (point[0], point[1], point[2])
             if self.cycle_first_z is None:
                 self.cycle_first_z = at[2]
+            if self.control_cycles is not None:
+                feed = self.state.feed
+                feed.rapid_requested = False  # the control positions at rapid itself
+                if feed.rapid_mode:
+                    self.rapid.leave()
+                self.control_cycles.hole(self.cycle, record.number, hole, self.cycle_first_z)
+                continue
             for leg in cycle_legs(self.cycle, at, hole, self.cycle_first_z):
                 if leg.dwell:
                     block = self.output.dwell(leg.dwell)

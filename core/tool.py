@@ -156,7 +156,9 @@ class ToolElement:
             block.cells[13] = t_code
             self.output.output(block)
         elif has_t:
-            block = self.output.dwell(machine.number_option(83))
+            seconds = machine.number_option(83)
+            # no change dwell: the T in a block of its own (a G04 P0 says nothing)
+            block = self.output.dwell(seconds) if seconds else Block(Code.NONMOTION)
             block.record = statement.number
             block.cells[13] = t_code
             self.output.output(block)

@@ -38,7 +38,7 @@ def test_failing_plugins_are_reported_by_name(monkeypatch: pytest.MonkeyPatch) -
     assert "not installed" in errors["broken_import"][0]
     assert "no_such_module_anywhere" in errors["missing_module"][0]
     assert any("printout template missing" in e for e in errors["broken_register"])
-    assert any("option 19 allows 0..6, 8..19" in e for e in errors["broken_register"])
+    assert any("option 19 allows 0..6, 8..20" in e for e in errors["broken_register"])
     assert plugins.machine(23) is not None
     sys.modules.pop("broken_import", None)
     sys.modules.pop("broken_register", None)

@@ -16,8 +16,9 @@ from typing import Any, Literal, TypeVar
 from gecent.core.absent import ABSENT, ABSENT_SPELLINGS, Absent
 from pydantic import BaseModel, ConfigDict, Field, ValidationError
 
-OPTION_COUNT = 250
-TABLEG_SIZE = 120
+OPTION_COUNT = 260  # the manual's 1-250 and gecent's 251-260 (docs/modern-controls.md)
+MANUAL_OPTION_COUNT = 250
+TABLEG_SIZE = 130  # the manual's 1-120 and gecent's 121-130
 TABLEM_SIZE = 200
 REGISTER_COUNT = 30
 STORE_SIZE = 300
@@ -53,7 +54,7 @@ class OptionSpec(_Frozen):
     kind: Literal["number", "text", "number_or_text"]
     default: float | str
     fixed: bool
-    status: Literal["active", "untested", "open", "reserved", "customer"]
+    status: Literal["active", "untested", "open", "reserved", "customer", "gecent"]
     meaning: str
     values: str
     seed: str

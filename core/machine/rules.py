@@ -51,7 +51,7 @@ def _option_values(machine: MachineDefinition) -> Iterator[Problem]:
         if machine.options[number] not in allowed:
             yield "optab", number, f"{rule}; found {machine.options[number]!r}"
     for number, low, high, what in (
-        (19, 0, 19, "spindle type"),
+        (19, 0, 20, "spindle type"),  # 20: gecent, S in RPM
         (116, 0, 9, "geometry class"),
         (7, 1, 300, "number of spindle ranges"),
         (8, 1, 300, "speeds per range"),

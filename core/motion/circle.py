@@ -11,19 +11,25 @@ and its continuation records is cut where it crosses a quadrant boundary (a Mark
 control does at most 90 degrees per block) and output as CODE +-10/11/12 blocks whose I, J, K
 are the unsigned offsets of the centre from each block's start. A first or last block with
 a zero in-plane departure, or a last block that seems to reverse, goes out linear.
+
+Modern controls (gecent options 252, 253; docs/modern-controls.md) take the whole arc, full
+circles included, in one block whose I, J, K are the signed offsets of the centre from the
+arc's start or the absolute centre, and the plane code names the machine's plane after SHUFFL.
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable
 from dataclasses import dataclass
-from math import hypot
+from math import atan2, hypot, pi, tau
 
 from gecent.core.absent import ABSENT
 from gecent.core.cl.records import Circle, Motion, MotionSubtype
-from gecent.core.errors import Diagnostic, NotYetSupported
+from gecent.core.errors import Diagnostic, FatalError, NotYetSupported
+from gecent.core.machine.shuffle import cell_map
 from gecent.core.motion.rounding import round_to_step, to_steps
 from gecent.core.output.block import Block, Code
+from gecent.core.output.modern import machine_planes
 from gecent.core.state import PostState
 
 # (u, v, normal) axis indices per plane: IPLANE 0 = XY, 1 = ZX, 2 = YZ (right-handed)
@@ -31,6 +37,7 @@ PLANES = ((0, 1, 2), (2, 0, 1), (1, 2, 0))
 # where an arc leaves quadrant q, as (du, dv) on the unit circle
 LEAVE_CCLW = {1: (0, 1), 2: (-1, 0), 3: (0, -1), 4: (1, 0)}
 LEAVE_CLW = {1: (1, 0), 2: (0, 1), 3: (-1, 0), 4: (0, -1)}
+NEAR = 0.95  # a whole arc's centre stays this many steps from the record's on each axis
 PLANE_CODES = (18, 19, 20)  # TABLEG: XY, ZX, YZ plane selection (001 L5124-5133)
 
 
@@ -65,8 +72,18 @@ class CircularMotion:
         self.last_plane = 0  # LSTPLN: XY at the start (decision: no plane block before FROM)
         self.arc: _Arc | None = None
         self.centre_moved: tuple[float, float, float] = (0.0, 0.0, 0.0)  # CIRDAT + TRANS
+        self.exact_centre: tuple[float, float, float] = (0.0, 0.0, 0.0)  # the record's, unrounded
         self.axis_sense = 0.0  # the circle axis component along the plane normal
         self._reference = 0.0
+        self.centre_words = int(machine.number_option(252))  # 0 unsigned, 1 signed, 2 absolute
+        self.whole = machine.number_option(253) == 1
+        self.machine_plane: tuple[int | None, ...] = PLANE_CODES
+        if self.centre_words:
+            try:
+                shuffle = cell_map(machine.number_option(59), "XYZ")
+            except ValueError as exc:
+                raise FatalError(7, str(exc)) from None
+            self.machine_plane = tuple(location for location, _ in machine_planes(shuffle))
 
     @property
     def collecting(self) -> bool:
@@ -78,6 +95,7 @@ class CircularMotion:
             self.centre = None
             return
         x, y, z, i, j, k = record.values[:6]
+        self.exact_centre = (x, y, z)
         self.centre = (
             round_to_step(x, self.step),
             round_to_step(y, self.step),
@@ -171,14 +189,18 @@ class CircularMotion:
         points.append(arc.end)
         code = Code(int((10 + self.plane) * (-1 if ccw else 1)))
         self._plane_block(arc.record)
+        if self.whole:
+            self._whole(arc, code, first, last, crossings == 4)
+            return
         for index, corner in enumerate(points):
             self._segment(arc, corner, code, index, len(points), points)
 
     def _plane_block(self, record: Motion) -> None:
-        if self.plane == self.last_plane or not self.three_axes:
+        if self.plane == self.last_plane or not (self.three_axes or self.centre_words):
             return
         self.last_plane = self.plane
-        g = self.machine.tableg[PLANE_CODES[self.plane]]
+        location = self.machine_plane[self.plane]
+        g = ABSENT if location is None else self.machine.tableg[location]
         if g is ABSENT:
             return
         block = Block(Code.G_ONLY, record.number)
@@ -226,6 +248,69 @@ class CircularMotion:
         self.emit(block)
         position.previous_part[:] = position.present_part
         position.previous[:] = position.present
+
+    def _whole(
+        self,
+        arc: _Arc,
+        code: Code,
+        first: tuple[float, float],
+        last: tuple[float, float],
+        long_way: bool,
+    ) -> None:
+        """The whole arc in one block: the end point, the centre words of option 252 and the
+        swept angle (for the cutting time). An end that rounds onto the start is a full
+        circle when the arc goes the long way round, else no move."""
+        position = self.state.position
+        u, v, _ = PLANES[self.plane]
+        step = self.step
+        position.present_part[:3] = list(arc.end)
+        position.present[:3] = [to_steps(value, step) for value in arc.end]
+        departures = [position.present[a] - position.previous[a] for a in range(3)]
+        turn = atan2(last[1], last[0]) - atan2(first[1], first[0])
+        sweep = (-turn if arc.clockwise else turn) % tau
+        if not any(departures):
+            if not long_way and sweep < pi:
+                return  # RETURN = -1: no move (001 L4283-4290)
+            sweep = tau
+        block = Block.motion(
+            code, arc.record.number, tuple(departures), tuple(position.present[:3]), step
+        )
+        centre = self._grid_centre(arc.radius / step, u, v)
+        for axis, value in zip((u, v), centre, strict=True):
+            offset = value - position.previous[axis] if self.centre_words == 1 else value
+            block.cells[8 + axis] = offset * step
+        block.radius = arc.radius
+        block.sweep = sweep
+        self.emit(block)
+        position.previous_part[:] = position.present_part
+        position.previous[:] = position.present
+
+    def _grid_centre(self, radius: float, u: int, v: int) -> tuple[int, int]:
+        """The centre on the step grid for a whole arc between rounded end points: of the
+        grid points within NEAR steps of the record's centre on each axis, the one whose distances
+        to the rounded start and end differ least from the radius (plain rounding can put
+        the two more than a step apart, which a control reads as a spiral)."""
+        position = self.state.position
+        moved = [a + t for a, t in zip(self.exact_centre, position.translation, strict=True)]
+        true_u, true_v = moved[u] / self.step, moved[v] / self.step
+        start = (position.previous[u], position.previous[v])
+        end = (position.present[u], position.present[v])
+        best: tuple[float, float, tuple[int, int]] | None = None
+        base_u, base_v = round(true_u), round(true_v)
+        for du in (-1, 0, 1):
+            for dv in (-1, 0, 1):
+                cu, cv = base_u + du, base_v + dv
+                if abs(cu - true_u) > NEAR or abs(cv - true_v) > NEAR:
+                    continue
+                error = max(
+                    abs(hypot(start[0] - cu, start[1] - cv) - radius),
+                    abs(hypot(end[0] - cu, end[1] - cv) - radius),
+                )
+                key = (error, hypot(cu - true_u, cv - true_v), (cu, cv))
+                if best is None or key[:2] < best[:2]:
+                    best = key
+        assert best is not None
+        return best[2]
 
     def _planar(self, points: list[tuple[float, ...]], normal: int) -> bool:
         return all(abs(p[normal] - self._reference) <= self.epsilon for p in points)

@@ -48,6 +48,7 @@ class Code(IntEnum):
     MULTIHEAD_1 = 17
     MULTIHEAD_2 = -17
     FINI = 18
+    CYCLE = 19  # gecent: a modern control's canned-cycle block (G81-G85, option 251 = 1)
 
 
 # Blocks that never reach the tape (manual §3.5.3.2 per-CODE disposition).
@@ -74,6 +75,8 @@ class Block:
     position: tuple[int, ...] | None = None
     steps: tuple[int, ...] | None = None
     radius: float | None = None  # CIRRAD of a circular block
+    feed_length: float = 0.0  # a cycle block's travel at feed (cutting time)
+    sweep: float | None = None  # the angle a whole-arc block turns (radians, option 253)
     rapid: bool = False
     rotary: tuple[int, float] | None = None  # a rotary block's cell and travel in degrees
     # the time this block takes: cutting (feed and rapid moves) and dwelling (CUTIME, DWTIME)
@@ -81,6 +84,7 @@ class Block:
     dwell_minutes: float = 0.0
     stop: bool = False  # a STOP or OPSTOP block (option 148 < 0 dwells only in these)
     skipped: bool = False  # output under OPSKIP/ON: "/" before the block
+    keep_blanks: bool = False  # a text block punched with its blanks (option 256)
     f_format: float | None = None  # REGFOR(11) for this block under inverse time
     # set by the output element: the printed value of each register output, and the tape line
     words: tuple[tuple[int, str], ...] = ()

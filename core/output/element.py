@@ -22,6 +22,7 @@ from gecent.core.motion.limits import SlideLimits
 from gecent.core.motion.rotary import UNITS_PER_DEGREE
 from gecent.core.output.block import Block, Code
 from gecent.core.output.marks import stand_in
+from gecent.core.output.modern import ModernControl, machine_planes
 from gecent.core.output.words import WordFormatter
 from gecent.core.reinstate import SPINDLE_COMMAND
 from gecent.core.state import PostState
@@ -39,6 +40,9 @@ CIRCLE_CODES = frozenset(
 MOTION_CODES = frozenset({Code.LINEAR}) | CIRCLE_CODES
 POSITION_CODES = frozenset({Code.POSITION_XY, Code.POSITION_Z})
 THREAD_CODES = frozenset({Code.THREAD_5, Code.THREAD_6})
+# blocks whose absolute positions replace their departures under option 251 = 1
+PLACED_CODES = MOTION_CODES | THREAD_CODES
+_IN_PLANE = ((0, 1), (2, 0), (1, 2))  # a circle states both axes of its CL plane
 # blocks whose cells 3..10 are registers already, not internal axes for SHUFFL
 UNSHUFFLED = frozenset({Code.DWELL})
 # numeric blocks that get TABLEG(5) when they have no G and option 38 = +-1 (001 L24890-24907)
@@ -87,6 +91,16 @@ class OutputElement:
         self.milling = False
         # option 1 = 1: a positioning block with a T repeats the spindle command (-1: not)
         self.merge_s_with_t = machine.number_option(1) == 1
+        axes = 2 if machine.number_option(22) in (11.0, 101.0, 110.0) else 3
+        self.modern = ModernControl(machine, self.step, axes)
+        # options 252 != 0: G02/G03 in the machine's plane, mirrored by SHUFFL's signs
+        self.mirrored = tuple(
+            mirrored if machine.number_option(252) else False
+            for _, mirrored in machine_planes(self.words.shuffle[:3])
+        )
+        self.separator = " " if machine.number_option(256) == 1 else ""
+        end_code = machine.m_code(3)
+        self.end_code: float | Absent = ABSENT if end_code is None else end_code
 
     # -- OUTPUT (flow chart 8) ------------------------------------------------------------
 
@@ -105,6 +119,8 @@ class OutputElement:
 
     def _output(self, block: Block) -> None:
         state = self.state
+        if self.modern.frame and not self.modern.started:
+            self._start_block(block.record)
         block.cells[15] = float(int(block.code))
         if block.code is Code.FROM and state.pending.m_code is not ABSENT:
             self.output(Block(Code.AUX_ONLY, block.record))  # "forced out" (001 L31370-31374)
@@ -118,6 +134,8 @@ class OutputElement:
             self._rotary(block)
         elif block.code in THREAD_CODES:
             self._thread(block)
+        elif block.code is Code.CYCLE:
+            self._cycle(block)
         else:
             if block.code in NON_MOTION_DWELL or block.code is Code.DWELL:
                 self._non_motion_dwell(block)
@@ -243,7 +261,8 @@ class OutputElement:
         assert block.steps is not None
         if block.code in CIRCLE_CODES:
             assert block.radius is not None
-            code = self.circular_codes.select(block.radius, int(block.code) > 0)
+            clockwise = (int(block.code) > 0) != self.mirrored[abs(int(block.code)) - 10]
+            code = self.circular_codes.select(block.radius, clockwise)
             offsets = [float(v) for v in block.cells[8:11] if v is not ABSENT]
             length = sum(o * o for o in offsets) ** 0.5  # R from the arc offsets
         else:
@@ -260,6 +279,9 @@ class OutputElement:
                 departures, code.gdimul, feed.rapid_ipm, low=feed.rapid_low
             )
             block.cells[11] = ABSENT if rapid is None else rapid
+            if self.modern.rapid_code is not None:  # G00: the control's own rapid, no F
+                block.cells[2] = self.modern.rapid_code
+                block.cells[11] = ABSENT
             block.cells[19] = ipm
             block.rapid = True
             block.cut_minutes = sum(d * d for d in departures) ** 0.5 / ipm
@@ -268,10 +290,14 @@ class OutputElement:
         self._check_feed()
         multiplied = (
             self.optimiser.multiplied(block, feed.ipm, code.gdimul, length, code.size_class)
-            if self.optimiser.multiplying and block.code is Code.LINEAR
+            if self.optimiser.multiplying
+            and block.code is Code.LINEAR
+            and not self.modern.direct_feed
             else None
         )
-        if multiplied is not None:
+        if self.modern.direct_feed:
+            command, ipm, f_format = self._direct_feed(block), feed.ipm, None
+        elif multiplied is not None:
             command, ipm, f_format = multiplied
         else:
             command, ipm, f_format = self.feed.command(
@@ -287,6 +313,55 @@ class OutputElement:
         else:
             block.cut_minutes = length / ipm
         self.cut_minutes += block.cut_minutes
+
+    def _cycle(self, block: Block) -> None:
+        """A control's canned-cycle block (core/motion/control_cycles.py): its F is the
+        feed itself (option 254)."""
+        self._check_feed()
+        feed = self.state.feed
+        if self.modern.direct_feed:
+            block.cells[11] = self._direct_feed(block)
+        block.cells[19] = feed.ipm
+        block.cut_minutes = block.feed_length / feed.ipm if feed.ipm > 0 else 0.0
+        self.cut_minutes += block.cut_minutes
+        self.modern.at = list(block.position or ())[: self.modern.axes] or None
+
+    def _direct_feed(self, block: Block) -> float:
+        """Option 254: F is the feed itself, per revolution under G95 when FEDRAT gave it so;
+        a change of mode goes out first in a block of its own."""
+        feed = self.state.feed
+        mode = self.modern.feed_mode_code(feed.per_revolution)
+        if mode is not None:
+            g_block = Block(Code.G_ONLY, block.record)
+            g_block.cells[2] = mode
+            self._output(g_block)
+            self.words.previous_f = ABSENT  # the control drops F with its feed mode
+        return feed.per_revolution_value if feed.per_revolution else feed.ipm
+
+    def _start_block(self, record: int | None) -> None:
+        """Option 258: the modal codes the program starts from, before its first block."""
+        modern = self.modern
+        modern.started = True
+        plane: int | None = 18  # TABLEG(18): XY
+        if self.state.machine.number_option(252):
+            plane = machine_planes(self.words.shuffle[:3])[0][0]
+        codes = modern.start_codes(plane)
+        g = next((f for f in self.words.formatters if f.location == 2), None)
+        if not codes or g is None:
+            return
+        words = [g.letter + g.format(code).punched for code in codes]
+        block = Block(Code.INSERT, record, " ".join(words))
+        block.keep_blanks = bool(self.separator)
+        self.emitted.append(block)
+
+    def finish_program(self, record: int | None) -> None:
+        """Option 258 at FINI: the end-of-program code, unless END has given it since the
+        last move."""
+        if not self.modern.frame or self.modern.ended or self.end_code is ABSENT:
+            return
+        self.flush_m(record)
+        self.state.pending.m_code = self.end_code
+        self._output(Block(Code.END, record))
 
     def _position(self, block: Block) -> None:
         """POSIT and POSFED (001 L34780-34878): an absolute positioning block's F command
@@ -373,31 +448,49 @@ class OutputElement:
         if block.code is Code.FROM:  # printed in the absolute columns only, never punched
             self.emitted.append(block)
             return
+        modern = self.modern
+        placed = modern.absolute and block.position is not None and block.code in PLACED_CODES
+        if placed:
+            assert block.position is not None
+            keep = () if block.code not in CIRCLE_CODES else _IN_PLANE[abs(int(block.code)) - 10]
+            modern.place(block, block.position, keep)
         if block.code not in UNSHUFFLED:
             self.words.shuffle_block(block)
         motion = (
             block.code in MOTION_CODES
             or block.code in POSITION_CODES
             or block.code is Code.ROTARY_INCREMENTAL
+            or block.code is Code.CYCLE
         )
         words = self.words.words(
             block,
             suppress=motion,
             sequence=self.state.sequence,
-            absolute=block.code in POSITION_CODES,
+            absolute=block.code in POSITION_CODES or placed or block.code is Code.CYCLE,
         )
+        if block.cells[13] is not ABSENT:
+            modern.forget()  # a tool change: the next move states every axis
+        if block.cells[14] is not ABSENT and block.cells[14] == self.end_code:
+            modern.ended = True
+        elif motion:
+            modern.ended = False
         if not motion and block.cells[2] is not ABSENT:
             self.words.previous_g = ABSENT  # a G04 or other G came between: repeat the motion G
         block.words = tuple((location, printed) for location, _, printed, _ in words)
         if block.punched:
-            punch = "".join(letter + punched for _, letter, _, punched in words)
+            punch = self.separator.join(
+                letter + punched for _, letter, _, punched in words if letter + punched
+            )
             block.punch = "/" + punch if block.skipped else punch
         self.emitted.append(block)
 
 
 def _arc_length(block: Block, step: float) -> float:
-    """The length of a quadrant segment: its chord over the radius gives the angle."""
+    """The length of a quadrant segment: its chord over the radius gives the angle; a whole
+    arc (option 253) knows its angle."""
     assert block.steps is not None and block.radius is not None
+    if block.sweep is not None:
+        return block.radius * block.sweep
     chord = sum((s * step) ** 2 for s in block.steps) ** 0.5
     ratio = min(1.0, chord / (2 * block.radius)) if block.radius else 0.0
     return 2 * block.radius * asin(ratio)

@@ -9,6 +9,11 @@
   blanks and periods are never punched (001 L889-890, L8849).
 * A signed register shows ``+`` for a positive value, as the manual's computer-printed sample
   does (001 L10341-10355).
+* Option 255 = 1 (gecent, modern controls): a register with fractional digits is written
+  with its decimal point, punched too, and without leading or trailing zeros (``X12.5``,
+  ``X-0.25``, ``X10.``): a Fanuc control reads ``X10`` as ten least increments. Whole-number
+  words lose their leading zeros too (``N12``, ``S1200``), except G, T and M, whose width
+  names the code (``G01``, ``T0101``, ``M03``).
 
 Each register's formatter is built once per machine, so the hot loop only quantises and joins.
 """
@@ -23,6 +28,7 @@ from gecent.core.machine.regformat import RegisterFormat
 from gecent.core.motion.rounding import half_up
 
 NO_DECIMAL_POINT = frozenset({1, 2, 12, 13, 14, 17})  # NDP locations (001 L24057-24062)
+CODE_WIDTH = frozenset({2, 13, 14})  # G, T, M keep their leading zeros under option 255
 
 
 class FormatOverflow(GecentError):
@@ -51,16 +57,24 @@ class Formatted:
 class RegisterFormatter:
     """Formats values of one register (one REGSTR/REGFOR location)."""
 
-    __slots__ = ("drop_trailing", "fmt", "letter", "location", "point")
+    __slots__ = ("bare", "decimal", "drop_trailing", "fmt", "letter", "location", "point")
 
     def __init__(
-        self, location: int, letter: str, fmt: RegisterFormat, *, drop_trailing: bool
+        self,
+        location: int,
+        letter: str,
+        fmt: RegisterFormat,
+        *,
+        drop_trailing: bool,
+        decimal: bool = False,
     ) -> None:
         self.location = location
         self.letter = letter
         self.fmt = fmt
         self.drop_trailing = drop_trailing and fmt.right > 0
         self.point = fmt.right > 0 and location not in NO_DECIMAL_POINT
+        self.decimal = decimal and fmt.right > 0
+        self.bare = decimal and fmt.right == 0 and location not in CODE_WIDTH
 
     def format(self, value: float, suppress_leading: int | None = None) -> Formatted:
         """The printed and punched forms. ``suppress_leading`` (option 51 = -2, the 100M's
@@ -68,6 +82,13 @@ class RegisterFormatter:
         zeros after the point (001 L16270-16295); the printed form keeps them."""
         fmt = self.fmt
         units = _units(abs(value), fmt.right)
+        if self.decimal:
+            return self._decimal(value, units)
+        if self.bare:
+            if len(str(units)) > fmt.left and units:
+                raise FormatOverflow(self.letter, value, fmt)
+            text = ("-" if value < 0 and units else "") + str(units)
+            return Formatted(text, text)
         digits = str(units).rjust(fmt.right + 1, "0")
         whole, fraction = digits[: len(digits) - fmt.right], digits[len(digits) - fmt.right :]
         whole = whole.lstrip("0")
@@ -86,6 +107,15 @@ class RegisterFormatter:
         if punched.strip("+-") == "":
             punched = sign + "0"
         return Formatted(printed, punched)
+
+    def _decimal(self, value: float, units: int) -> Formatted:
+        fmt = self.fmt
+        whole, fraction = divmod(units, 10**fmt.right)
+        if len(str(whole)) > fmt.left and whole:
+            raise FormatOverflow(self.letter, value, fmt)
+        shown = str(fraction).rjust(fmt.right, "0").rstrip("0")
+        text = ("-" if value < 0 and units else "") + f"{whole}.{shown}"
+        return Formatted(text, text)
 
 
 def _units(magnitude: float, decimals: int) -> int:

@@ -17,7 +17,8 @@ def tape_lines(blocks: Iterable[Block]) -> list[str]:
             continue
         if block.code in TEXT_CODES:
             # Text blocks are already BCD: punched as written (blanks are never punched).
-            text = (block.text or "").replace(" ", "")
+            text = block.text or ""
+            text = text.strip() if block.keep_blanks else text.replace(" ", "")
             if text:  # an empty line would be a blank card
                 lines.append(text)
         elif block.punch is not None:

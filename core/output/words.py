@@ -27,6 +27,7 @@ class WordFormatter:
         order = [k for k in (machine.output_order or ()) if k not in NEVER_OUTPUT] or [
             k for k in range(1, 31) if k not in NEVER_OUTPUT
         ]
+        self.decimal = machine.number_option(255) == 1
         self.formatters: list[RegisterFormatter] = []
         for location in order:
             fmt = registers.formats[location]
@@ -34,7 +35,13 @@ class WordFormatter:
                 continue
             drop = contouring or location not in (3, 4, 5)
             self.formatters.append(
-                RegisterFormatter(location, registers.letters[location], fmt, drop_trailing=drop)
+                RegisterFormatter(
+                    location,
+                    registers.letters[location],
+                    fmt,
+                    drop_trailing=drop,
+                    decimal=self.decimal,
+                )
             )
         try:
             self.shuffle = cell_map(machine.number_option(59), "XYZ") + cell_map(
@@ -42,6 +49,9 @@ class WordFormatter:
             )
         except ValueError as exc:
             raise FatalError(7, str(exc)) from None
+        self.signed_centre = machine.number_option(252) != 0
+        self.diameter = machine.number_option(260) == 1
+        self.absolute_centre = machine.number_option(252) == 2
         self.zero_rule = machine.number_option(51)
         self.suppress_g = machine.number_option(38) == 0
         self.suppress_f = machine.number_option(107) in (1.0, 2.0)
@@ -72,7 +82,11 @@ class WordFormatter:
                 fmt = decode_regfor(-size if regfor < 0 else size)
                 assert fmt is not None
                 formatters[location] = RegisterFormatter(
-                    location, machine.registers.letters[location], fmt, drop_trailing=True
+                    location,
+                    machine.registers.letters[location],
+                    fmt,
+                    drop_trailing=True,
+                    decimal=self.decimal,
                 )
         return formatters
 
@@ -92,7 +106,7 @@ class WordFormatter:
             assert fmt is not None
             letter = self.machine.registers.letters[11]
             formatter = self._f_formats[regfor] = RegisterFormatter(
-                11, letter, fmt, drop_trailing=False
+                11, letter, fmt, drop_trailing=False, decimal=self.decimal
             )
         return formatter
 
@@ -106,7 +120,13 @@ class WordFormatter:
         for value, target in zip(internal, self.shuffle, strict=True):
             if target is not None and value is not ABSENT:
                 cell, sign = target
-                cells[cell] = sign * float(value) if cell < 8 else float(value)
+                signed = cell < 8 or self.signed_centre
+                cells[cell] = sign * float(value) if signed else float(value)
+        if self.diameter:  # option 260: X is a diameter (and an absolute centre's I)
+            for cell in (3, 8) if self.absolute_centre else (3,):
+                radius = cells[cell]
+                if radius is not ABSENT:
+                    cells[cell] = 2 * float(radius)
 
     def words(
         self, block: Block, *, suppress: bool, sequence: int, absolute: bool = False
@@ -154,7 +174,7 @@ class WordFormatter:
             if (
                 location in ZERO_RULE_CELLS
                 and not (absolute and location <= 7)
-                and text.punched.strip("+-0") == ""
+                and text.punched.strip("+-0.") == ""
             ):
                 if self.zero_rule in (0, -2):  # delete value and address (standard)
                     continue

@@ -2,7 +2,9 @@
 point is drilled by the expansion of core/motion/cycles.py (docs/research/cycles.md); a
 contouring machine whose control has the cycle's own G code (TABLEG 82-88) would take the
 control-cycle path, which is not built for contouring controls yet. On a positioning
-machine (option 1 = 1, 2) the control runs the cycle: core/motion/positioning.py (CYCLGP)."""
+machine (option 1 = 1, 2) the control runs the cycle: core/motion/positioning.py (CYCLGP);
+on a modern contouring control with absolute dimensions (gecent option 251 = 1) too:
+core/motion/control_cycles.py (G81-G85)."""
 
 from __future__ import annotations
 
@@ -33,6 +35,9 @@ def cycle(run: Run, statement: Statement) -> None:
         run.output.milling = parsed is not None and parsed.kind == "MILL"
     if parsed is None:
         run.cycle = None
+        if run.control_cycles is not None:
+            run.control_cycles.off(statement.number)
+            run.control_cycles = None
         return
     cell = CYCLE_TYPES[parsed.kind][1]
     if positioning and machine.g_code(cell) is None:
@@ -52,9 +57,11 @@ def cycle(run: Run, statement: Statement) -> None:
         ]
         if unsent:
             run.warn(Diagnostic(CONTROL_CYCLE_KEEPS.format(", ".join(unsent)), statement.where))
-    if not positioning and machine.g_code(cell) is not None:
+    control = not positioning and machine.g_code(cell) is not None
+    if control and machine.number_option(251) != 1:
         raise NotYetSupported(
-            f"CYCLE/{parsed.kind} by the control's own cycle (TABLEG({cell}), option 1)",
+            f"CYCLE/{parsed.kind} by the control's own cycle (TABLEG({cell})) with "
+            "incremental dimensions (option 251 = 1 takes it in absolute ones)",
             statement.where,
         )
     units = run.units
@@ -67,6 +74,13 @@ def cycle(run: Run, statement: Statement) -> None:
         return_level=None if parsed.return_level is None else units.length(parsed.return_level),
     )
     run.cycle_first_z = None
+    if control:
+        element = run.control_cycle_element()
+        element.check(run.cycle, statement.where)
+        run.control_cycles = element
+    elif run.control_cycles is not None:  # a cycle the control lacks follows one it has
+        run.control_cycles.off(statement.number)
+        run.control_cycles = None
     if parsed.feed is not None:
         value, unit = parsed.feed
         program_feed(run, units.per_minute(value, unit), unit, statement)

@@ -25,7 +25,7 @@ if TYPE_CHECKING:
 
 
 @dataclass(slots=True)
-class _Request:
+class FedratRequest:
     """What one FEDRAT statement says: the feed (FDHOLD), its unit word (FRMOD), the
     range (IRANGE) and MAXIPM (SFMAXI); None for what it does not say."""
 
@@ -42,7 +42,7 @@ def fedrat(run: Run, statement: Statement) -> None:
     (STOREM of its M code, STATE(6), the option-93 dwell); the range's limits FRMIN/FRMAX
     for MAXIPM and the feed. MMPM and MMPR are APT IV's; a bare value is in the CL unit and
     keeps the last mode. Without a feed value the held one is kept (FEDRAT/RANGE,2)."""
-    request = _scan(statement)
+    request = scan_fedrat(statement)
     feed = run.state.feed
     per_minute = request.unit is not None and request.unit.name in ("IPM", "MMPM")
     if per_minute and run.machine.number_option(2) == 1:
@@ -73,10 +73,10 @@ def fedrat(run: Run, statement: Statement) -> None:
         _hold_feed(run, ipm, statement, report=not rapid)
 
 
-def _scan(statement: Statement) -> _Request:
+def scan_fedrat(statement: Statement) -> FedratRequest:
     """The statement's items in order: one feed value, at most one unit word (before or
     after it), RANGE and MAXIPM each with the item after them."""
-    request = _Request()
+    request = FedratRequest()
     values: list[float] = []
     args = statement.args
     index = 0

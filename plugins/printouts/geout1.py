@@ -133,6 +133,7 @@ PRINTABLE = (
         Code.G_ONLY,
         Code.END,
         Code.TMARK,
+        Code.CYCLE,
     }
 )
 

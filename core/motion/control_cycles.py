@@ -1,0 +1,124 @@
+"""Canned cycles run by a modern control (G81-G85) on a contouring machine with absolute
+dimensions (gecent option 251 = 1 and the cycle's TABLEG 82-88; docs/modern-controls.md).
+
+The manual's contouring machines had no cycles of their own, so CYCLE was expanded into
+moves (core/motion/cycles.py); its positioning machines got one block with incremental Z
+and R (CYCLGP). A Fanuc- or LinuxCNC-style control takes, for each hole (x, y, top):
+
+    G99 (or G98)                   once, before the first hole: the return level
+    G81 X x Y y Z bottom R plane F feed [P dwell] [Q peck]
+    X x Y y                        the next holes, the cycle being modal
+    G80                            at CYCLE/OFF
+
+with the hole read as APT and CAM systems write it, exactly as the expansion reads it:
+R = top + CLEAR - RAPTO, bottom = top - DEPTH. Without RETURN the tool goes back to R (G99);
+RETURN,0 sends it back to the level the cycle started from (G98). Other RETURN levels have
+no G code and stop the run. The DWELL goes in the option-57 register as for G04, the DEEP
+step in Q (REGSTR 21). Z and R are output again whenever a hole changes them.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+from gecent.core.errors import NotYetSupported, SourcePosition
+from gecent.core.motion.cycles import CYCLE_TYPES, Cycle
+from gecent.core.motion.rounding import to_steps
+from gecent.core.output.block import Block, Code
+from gecent.core.output.modern import RETURN_INITIAL, RETURN_R_PLANE
+from gecent.core.state import PostState
+
+PECK_REGISTER = 21  # Q
+R_REGISTER = 16
+
+
+class ControlCycles:
+    def __init__(self, state: PostState, output: Callable[[Block], None]) -> None:
+        machine = state.machine
+        self.state = state
+        self.output = output
+        self.step = machine.number_option(14)
+        self.machine = machine
+        self.active = False  # a cycle block has been output since the last G80
+        self.return_code: float | None = None
+        self.words: tuple[float, float] | None = None  # the Z and R in force
+
+    def check(self, cycle: Cycle, where: SourcePosition) -> None:
+        """What the control's cycle cannot do stops the run at the CYCLE statement."""
+        machine = self.machine
+        if cycle.return_level not in (None, 0.0):
+            raise NotYetSupported(
+                "CYCLE RETURN to a level other than the start (0) by the control's cycle",
+                where,
+            )
+        location = RETURN_R_PLANE if cycle.return_level is None else RETURN_INITIAL
+        if machine.g_code(location) is None:
+            raise NotYetSupported(f"a control cycle without its return code TABLEG({location})")
+        if cycle.kind == "DEEP" and cycle.step and machine.registers.formats[21] is None:
+            raise NotYetSupported("CYCLE/DEEP's step without a Q register (REGFOR 21)", where)
+        if machine.registers.formats[R_REGISTER] is None:
+            raise NotYetSupported("a control cycle without an R register (REGFOR 16)", where)
+
+    def hole(
+        self,
+        cycle: Cycle,
+        record: int,
+        hole: tuple[float, float, float],
+        first_z: float,
+    ) -> None:
+        """One hole: the cycle block; the tool ends at (x, y, the return level)."""
+        position = self.state.position
+        tx, ty, tz = position.translation
+        x, y, top = hole[0] + tx, hole[1] + ty, hole[2] + tz
+        plane = top + cycle.clearance - cycle.rapto
+        bottom = top - cycle.depth
+        back = plane if cycle.return_level is None else max(first_z + tz, plane)
+        machine = self.machine
+        if not self.active:
+            location = RETURN_R_PLANE if cycle.return_level is None else RETURN_INITIAL
+            code = machine.g_code(location)
+            assert code is not None  # check() made sure
+            if code != self.return_code:
+                g_block = Block(Code.G_ONLY, record)
+                g_block.cells[2] = code
+                self.output(g_block)
+                self.return_code = code
+        reached = (to_steps(x, self.step), to_steps(y, self.step), to_steps(back, self.step))
+        block = Block(Code.CYCLE, record)
+        block.steps = tuple(reached[a] - position.previous[a] for a in range(3))
+        block.position = reached
+        block.cells[3] = reached[0] * self.step
+        block.cells[4] = reached[1] * self.step
+        cycle_g = machine.g_code(CYCLE_TYPES[cycle.kind][1])
+        assert cycle_g is not None
+        block.cells[2] = cycle_g
+        words = (to_steps(bottom, self.step) * self.step, to_steps(plane, self.step) * self.step)
+        if words != self.words or not self.active:
+            block.cells[5], block.cells[R_REGISTER] = words
+            if cycle.kind == "DEEP" and cycle.step:
+                block.cells[PECK_REGISTER] = cycle.step
+            dwell = cycle.dwell if cycle.kind == "FACE" or cycle.dwell else 0.0
+            if dwell:
+                register = int(machine.number_option(57))
+                block.cells[register] = dwell / (machine.number_option(56) or 1.0)
+        self.words = words
+        block.feed_length = 2 * (plane - bottom)  # down and (at most) back at feed
+        block.dwell_minutes = cycle.dwell / 60.0 if cycle.dwell else 0.0
+        self.active = True
+        self.output(block)
+        position.present_part[:3] = [x, y, back]
+        position.present[:3] = list(reached)
+        position.previous_part[:] = position.present_part
+        position.previous[:] = position.present
+
+    def off(self, record: int) -> None:
+        """CYCLE/OFF: G80 (TABLEG(1)) when a cycle block went out."""
+        if not self.active:
+            return
+        self.active = False
+        self.words = None
+        code = self.machine.g_code(1)
+        if code is not None:
+            block = Block(Code.G_ONLY, record)
+            block.cells[2] = code
+            self.output(block)

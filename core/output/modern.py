@@ -1,0 +1,134 @@
+"""Modern controls (gecent options 251-260, docs/modern-controls.md): what a Fanuc- or
+LinuxCNC-style control reads that a 1970 Mark Century tape reader did not.
+
+* option 251: absolute positions under G90 (an axis whose position does not change is left
+  out, every axis after a tool change and in the first move), or departures under G91;
+* option 254: F is the feed itself, per minute under G94 or per revolution under G95, and
+  rapid moves are G00 without F;
+* option 258: the start block of modal codes and the end-of-program code at FINI;
+* the plane a CL plane lands on after SHUFFL (options 59/60), and whether the shuffle
+  mirrors it, so G17/G18/G19 and G02/G03 name the machine's plane and sense.
+
+The manual's own behaviour is untouched when these options are 0.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+from gecent.core.absent import ABSENT
+from gecent.core.machine.definition import MachineDefinition
+from gecent.core.output.block import Block
+
+ABSOLUTE, INCREMENTAL_CODED = 1.0, 2.0
+# TABLEG locations (gecent's 121-127 and the manual's) used by modern controls
+INCH_UNITS, METRIC_UNITS = 121, 122
+PER_MINUTE, PER_REVOLUTION = 123, 124
+RETURN_INITIAL, RETURN_R_PLANE = 125, 126
+RAPID_TRAVERSE = 127
+ABSOLUTE_INPUT, INCREMENTAL_INPUT = 96, 97
+CUTCOM_OFF, CYCLE_OFF = 40, 1
+PLANE_LOCATIONS = {(3, 4): 18, (5, 3): 19, (4, 5): 20}  # machine XY, ZX, YZ: TABLEG 18-20
+_CL_PLANES = ((0, 1), (2, 0), (1, 2))  # CL XY, ZX, YZ as (u, v) axis indices
+
+
+def machine_planes(
+    shuffle: Sequence[tuple[int, int] | tuple[int, float] | None],
+) -> tuple[tuple[int | None, bool], ...]:
+    """For each CL plane (XY, ZX, YZ): the TABLEG location of the machine plane its axes are
+    output on (None when an axis is not output), and whether the shuffle mirrors the plane
+    (one axis reversed, or the two axes swapped), which turns G02 into G03."""
+    planes: list[tuple[int | None, bool]] = []
+    for u, v in _CL_PLANES:
+        first, second = shuffle[u], shuffle[v]
+        if first is None or second is None:
+            planes.append((None, False))
+            continue
+        (cu, su), (cv, sv) = first, second
+        location = PLANE_LOCATIONS.get((cu, cv))
+        swapped = location is None
+        if swapped:
+            location = PLANE_LOCATIONS.get((cv, cu))
+        mirrored = (su * sv < 0) != swapped
+        planes.append((location, mirrored))
+    return tuple(planes)
+
+
+class ModernControl:
+    """The per-run state of the modern options: the control's position and feed mode."""
+
+    __slots__ = (
+        "absolute",
+        "at",
+        "axes",
+        "direct_feed",
+        "ended",
+        "frame",
+        "machine",
+        "per_revolution",
+        "rapid_code",
+        "started",
+        "step",
+    )
+
+    def __init__(self, machine: MachineDefinition, step: float, axes: int) -> None:
+        self.machine = machine
+        self.step = step
+        self.axes = axes
+        self.absolute = machine.number_option(251) == ABSOLUTE
+        self.direct_feed = machine.number_option(254) == 1
+        self.frame = machine.number_option(258) == 1
+        self.rapid_code = machine.g_code(RAPID_TRAVERSE)
+        self.at: list[int] | None = None  # the control's position, CL axis order, steps
+        self.per_revolution: bool | None = None  # the G94/G95 mode output last
+        self.started = False
+        self.ended = False
+
+    @property
+    def active(self) -> bool:
+        return self.absolute or self.direct_feed or self.frame
+
+    def start_codes(self, plane_location: int | None) -> list[float]:
+        """The start block's modal G codes, those the machine has, in the usual order."""
+        machine = self.machine
+        dimension = machine.number_option(251)
+        locations = [
+            plane_location,
+            METRIC_UNITS if machine.number_option(138) == 1 else INCH_UNITS,
+            ABSOLUTE_INPUT
+            if dimension == ABSOLUTE
+            else INCREMENTAL_INPUT
+            if dimension == INCREMENTAL_CODED
+            else None,
+            PER_MINUTE if self.direct_feed else None,
+            CUTCOM_OFF,
+            CYCLE_OFF,
+        ]
+        codes = [machine.g_code(location) for location in locations if location is not None]
+        return [code for code in codes if code is not None]
+
+    def feed_mode_code(self, per_revolution: bool) -> float | None:
+        """G94 or G95 when the feed mode changes (None: no change, or no such code)."""
+        if self.per_revolution is None:
+            self.per_revolution = False  # the start block set G94
+        if per_revolution == self.per_revolution:
+            return None
+        self.per_revolution = per_revolution
+        return self.machine.g_code(PER_REVOLUTION if per_revolution else PER_MINUTE)
+
+    def place(self, block: Block, reached: tuple[int, ...], keep: tuple[int, ...] = ()) -> None:
+        """Absolute words: cells 3.. hold the positions reached, in CL axis order before
+        SHUFFL; an axis the control is at already is left out, unless ``keep`` names it (a
+        circle states both axes of its plane: LinuxCNC refuses G02 without them)."""
+        at = self.at
+        for axis in range(self.axes):
+            steps = reached[axis]
+            if at is not None and at[axis] == steps and axis not in keep:
+                block.cells[3 + axis] = ABSENT
+            else:
+                block.cells[3 + axis] = steps * self.step
+        self.at = list(reached[: self.axes])
+
+    def forget(self) -> None:
+        """After a tool change the next move states every axis."""
+        self.at = None

@@ -1,0 +1,2 @@
+"""`gecent verify`: a tape read back by LinuxCNC's own interpreter and compared with the CL
+path (docs/verify.md)."""

@@ -1,0 +1,94 @@
+"""One verification: the machine, the CL path, rs274's reading of the tape, the comparison
+and its report (docs/verify.md)."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from gecent.core.cl.stream import read_cl
+from gecent.core.machine.definition import MachineDefinition
+from gecent.core.machine.selection import apply_machin_options, first_machin, resolve_machine
+from gecent.core.plugins import PluginSet
+from gecent.core.verify.clpath import cl_path
+from gecent.core.verify.compare import AXIS_NAMES, Comparison, compare
+from gecent.core.verify.rs274 import Interpretation, interpret
+
+DEFAULT_TOLERANCE_MM = 0.001
+
+
+@dataclass
+class Verification:
+    machine: MachineDefinition
+    interpretation: Interpretation
+    comparison: Comparison | None  # None when rs274 stopped on the tape
+    tolerance: float  # in the tape's units
+    unit: str
+    tape_lines: list[str]
+
+    @property
+    def passed(self) -> bool:
+        return self.comparison is not None and self.comparison.passed
+
+    def report(self) -> list[str]:
+        unit = self.unit
+        if self.comparison is None:
+            line = self.interpretation.error_line
+            text = self._tape_text(line)
+            return [
+                "verify: FAILED: rs274 stopped reading the tape"
+                + (f" at tape line {line}: {text}" if line else ""),
+                f"  rs274: {self.interpretation.error}",
+            ]
+        result = self.comparison
+        deviation = "  ".join(f"{AXIS_NAMES[i]} {result.deviation[i]:.4f}" for i in range(3))
+        lines = [
+            f"verify: {result.moves} tape moves (rs274), {result.targets} CL points, "
+            f"{result.arcs} arcs and {result.feeds} feeds checked, tolerance "
+            f"{self.tolerance:g} {unit}",
+            f"max deviation ({unit}): {deviation}",
+        ]
+        mismatch = result.mismatch
+        if mismatch is None:
+            lines.append("verify: passed: every CL point reached in order")
+            return lines
+        where = mismatch.target.where
+        lines.append(f"verify: FAILED: first mismatch at CL {where}: {mismatch.target.statement}")
+        if mismatch.move is not None:
+            line = mismatch.move.line
+            lines.append(f"  tape line {line}: {self._tape_text(line)}")
+            end = ", ".join(f"{v:.4f}" for v in mismatch.move.end)
+            lines.append(f"  the tape's {mismatch.move.kind} move ends at ({end})")
+        target = ", ".join(f"{v:.4f}" for v in mismatch.target.point)
+        lines.append(f"  the CL point is ({target}): {mismatch.reason}")
+        return lines
+
+    def _tape_text(self, line: int | None) -> str:
+        if line is None or not 1 <= line <= len(self.tape_lines):
+            return "?"
+        return self.tape_lines[line - 1].strip()
+
+
+def verify(
+    tape_path: str,
+    cl_file: str,
+    plugins: PluginSet,
+    machine_key: str | MachineDefinition | None = None,
+    tolerance_mm: float = DEFAULT_TOLERANCE_MM,
+) -> Verification:
+    request, _ = first_machin(read_cl(cl_file, plugins))
+    machine = resolve_machine(plugins, machine_key, request)
+    if request is not None and machine_key is None and request.number is not None:
+        machine = apply_machin_options(machine, request)[0]  # MACHIN/...,OPTAB and LINEAR
+    path = cl_path(read_cl(cl_file, plugins), machine)
+    reading = interpret(tape_path, diameter=machine.number_option(260) == 1)
+    unit = "in" if reading.units == "INCHES" else "mm"
+    tolerance = tolerance_mm / 25.4 if unit == "in" else tolerance_mm
+    with open(tape_path, encoding="ascii", errors="replace") as tape:
+        lines = tape.read().splitlines()
+    if reading.error is not None:
+        return Verification(machine, reading, None, tolerance, unit, lines)
+    fmt = machine.registers.formats[11]
+    decimals = min(4, fmt.right) if fmt is not None else 4
+    feed_tolerance = 0.5 * 10.0**-decimals + 1e-9
+    comparison = compare(path, reading.moves, tolerance, feed_tolerance)
+    return Verification(machine, reading, comparison, tolerance, unit, lines)

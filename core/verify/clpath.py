@@ -1,0 +1,297 @@
+"""The CL path a tape must follow, read from the CL file itself (not from the post), in the
+machine's axes and units: every point in order, its motion kind, the arc it ends (centre,
+radius, sense) and the feed in force.
+
+What the CL file means is read as the post reads it, from the same definitions: UNITS and
+FEDRAT units (core/units.py), TRANS, RAPID (one motion record, or modal under option
+109 = -1), the CIRCLE record before the motion that ends on the arc (its sense from the
+first two points about the centre, or with one point counterclockwise about the circle
+axis), and CYCLE: each point a hole drilled as core/motion/cycles.py spells out. Options 59
+and 60 put the CL axes on the machine's; the interpreter reports radii on a diameter lathe,
+so no doubling here.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+from dataclasses import dataclass, field, replace
+from math import hypot
+
+from gecent.core.cl.records import (
+    Arelem,
+    Circle,
+    Fini,
+    Motion,
+    MotionSubtype,
+    Record,
+    Statement,
+)
+from gecent.core.errors import Diagnostic, InputError, NotYetSupported, SourcePosition
+from gecent.core.machine.definition import MachineDefinition
+from gecent.core.machine.shuffle import cell_map
+from gecent.core.motion.cycles import Cycle, cycle_legs, parse_cycle
+from gecent.core.statements.feed import scan_fedrat
+from gecent.core.units import UnitScale
+
+Point = tuple[float, float, float]
+# rs274's ARC_FEED plane axes, (first, second) machine axis indices
+PLANE_AXES = {"XY": (0, 1), "XZ": (2, 0), "YZ": (1, 2)}
+_CL_PLANES = ((0, 1, 2), (2, 0, 1), (1, 2, 0))  # (u, v, normal) for CL XY, ZX, YZ
+
+
+@dataclass(frozen=True, slots=True)
+class ArcSpec:
+    centre: Point  # machine axes; the plane's normal axis holds nothing to compare
+    radius: float
+    plane: str  # rs274's name of the machine plane
+    counterclockwise: bool  # in rs274's (first, second) axis order
+    on_arc: tuple[Point, ...] = ()  # the record's other points, on the arc within ``slack``
+    slack: float = 0.0  # INTOL/OUTTOL in force: how far APT lets those points stray
+
+
+@dataclass(frozen=True, slots=True)
+class Target:
+    """A point the tape must reach. ``kind``: "rapid", "feed", "cycle-entry" (a hole's R
+    plane: any moves may lead there) or "cycle" (the control's own moves, on the hole's
+    axis). ``feed``: the feed in force, (value, per revolution), or None before FEDRAT."""
+
+    point: Point
+    kind: str
+    where: SourcePosition
+    statement: str
+    feed: tuple[float, bool] | None = None
+    arc: ArcSpec | None = None
+
+
+@dataclass
+class ClPath:
+    targets: list[Target] = field(default_factory=list)
+    compared: tuple[int, ...] = (0, 1, 2)  # machine axes the CL path gives
+    notes: list[Diagnostic] = field(default_factory=list)
+
+
+class _Reader:
+    def __init__(self, machine: MachineDefinition) -> None:
+        self.machine = machine
+        self.units = UnitScale(machine)
+        shuffle = cell_map(machine.number_option(59), "XYZ")
+        two_axes = machine.number_option(22) in (11.0, 101.0, 110.0)
+        self.axes = [
+            None if target is None or (two_axes and axis == 2) else (target[0] - 3, target[1])
+            for axis, target in enumerate(shuffle)
+        ]
+        self.path = ClPath(compared=tuple(sorted(m for m, _ in filter(None, self.axes))))
+        self.at: Point = (0.0, 0.0, 0.0)  # CL units, with TRANS
+        self.translation: Point = (0.0, 0.0, 0.0)
+        self.rapid_once = False
+        self.rapid_modal = False
+        self.modal_rapid_mode = machine.number_option(109) == -1
+        self.feed: tuple[float, bool] | None = None
+        self.per_revolution = False
+        self.circle: Circle | None = None
+        self.arc: tuple[Circle, Motion, list[Point]] | None = None
+        self.cycle: Cycle | None = None
+        self.cycle_first_z: float | None = None
+        self.circles = machine.number_option(9) == 1
+        self.tolerances = [0.0, 0.0]  # INTOL, OUTTOL (CL units scaled to the machine's)
+
+    def machine_point(self, point: Iterable[float]) -> Point:
+        out = [0.0, 0.0, 0.0]
+        for value, target in zip(point, self.axes, strict=False):
+            if target is not None:
+                out[target[0]] = target[1] * value
+        return (out[0], out[1], out[2])
+
+    def read(self, records: Iterable[Record]) -> ClPath:
+        for record in records:
+            record = self.units.record(record)
+            if self.arc is not None:
+                if isinstance(record, Motion) and record.subtype is MotionSubtype.CONTINUATION:
+                    self.arc[2].extend(self._points(record))
+                    continue
+                self._finish_arc()
+            if isinstance(record, Motion):
+                self._motion(record)
+            elif isinstance(record, Circle):
+                self.circle = record if self.circles and len(record.values) >= 7 else None
+            elif isinstance(record, Statement):
+                self._statement(record)
+            elif isinstance(record, Arelem) and record.subtype in (4, 5) and record.values:
+                self.tolerances[record.subtype - 4] = abs(record.values[0])
+            elif isinstance(record, Fini):
+                break
+        if self.arc is not None:
+            self._finish_arc()
+        return self.path
+
+    def _points(self, record: Motion) -> list[Point]:
+        tx, ty, tz = self.translation
+        if record.subtype is MotionSubtype.GODLTA:
+            values = record.points[0]
+            delta = (0.0, 0.0, values[0]) if len(values) == 1 else values[:3]
+            x, y, z = self.at
+            return [(x + delta[0], y + delta[1], z + delta[2])]
+        for point in record.points:
+            if len(point) != 3:
+                raise NotYetSupported("verifying multiaxis motion", record.where)
+        return [(p[0] + tx, p[1] + ty, p[2] + tz) for p in record.points]
+
+    def _statement(self, statement: Statement) -> None:
+        major = statement.major
+        if major == "UNITS":
+            self.units.set_units(statement)
+        elif major == "RAPID":
+            self.rapid_once = True
+            self.rapid_modal = self.modal_rapid_mode
+        elif major == "FEDRAT":
+            self.rapid_modal = False
+            request = scan_fedrat(statement)
+            if request.value is not None:
+                unit = request.unit
+                if unit is not None:
+                    self.per_revolution = unit.name in ("IPR", "MMPR")
+                self.feed = (self.units.per_minute(request.value, unit), self.per_revolution)
+        elif major == "TRANS":
+            numbers = [self.units.length(v) for v in statement.numbers()]
+            x, y, z = (*numbers, 0.0, 0.0, 0.0)[:3]
+            self.translation = (x, y, z)
+        elif major == "CYCLE":
+            parsed = parse_cycle(statement, lambda note: None)
+            units = self.units
+            self.cycle = (
+                None
+                if parsed is None
+                else replace(
+                    parsed,
+                    depth=units.length(parsed.depth),
+                    clearance=units.length(parsed.clearance),
+                    step=None if parsed.step is None else units.length(parsed.step),
+                    rapto=units.length(parsed.rapto),
+                    return_level=None
+                    if parsed.return_level is None
+                    else units.length(parsed.return_level),
+                )
+            )
+            self.cycle_first_z = None
+            if parsed is not None and parsed.feed is not None:
+                value, unit = parsed.feed
+                self.per_revolution = unit is not None and unit.name in ("IPR", "MMPR")
+                self.feed = (self.units.per_minute(value, unit), self.per_revolution)
+
+    def _kind(self) -> str:
+        rapid = self.rapid_once or self.rapid_modal
+        self.rapid_once = False
+        return "rapid" if rapid else "feed"
+
+    def _motion(self, record: Motion) -> None:
+        if record.subtype is MotionSubtype.FROM:
+            self.at = self._points(record)[0]
+            self.circle = None
+            return
+        points = self._points(record)
+        if self.cycle is not None:
+            self._holes(record, points)
+            return
+        circle, self.circle = self.circle, None
+        if circle is not None and record.subtype is MotionSubtype.GOTO:
+            self.arc = (circle, record, list(points))
+            self.rapid_once = False
+            return
+        kind = self._kind()
+        for point in points:
+            self._target(point, kind, record, None)
+
+    def _target(self, point: Point, kind: str, record: Motion, arc: ArcSpec | None) -> None:
+        name = record.subtype.name
+        text = f"{name}/" + ",".join(f"{v:.4f}" for v in point)
+        self.path.targets.append(
+            Target(self.machine_point(point), kind, record.where, text, self.feed, arc)
+        )
+        self.at = point
+
+    def _holes(self, record: Motion, points: list[Point]) -> None:
+        assert self.cycle is not None
+        self.rapid_once = False
+        for hole in points:
+            if self.cycle_first_z is None:
+                self.cycle_first_z = self.at[2]
+            legs = cycle_legs(self.cycle, self.at, hole, self.cycle_first_z)
+            if legs and legs[0].point[2] == self.at[2] and legs[0].point[:2] != self.at[:2]:
+                legs = legs[1:]  # positioning at the present height: the control's own way
+            for index, leg in enumerate(legs):
+                kind = "cycle-entry" if index == 0 else "cycle"
+                self._target(leg.point, kind, record, None)
+
+    def _finish_arc(self) -> None:
+        assert self.arc is not None
+        circle, record, points = self.arc
+        self.arc = None
+        xc, yc, zc, i, j, k = circle.values[:6]
+        tx, ty, tz = self.translation
+        centre = (xc + tx, yc + ty, zc + tz)
+        epsilon = self.machine.number_option(5)
+        plane = 2 if abs(i) > epsilon else 1 if abs(j) > epsilon else 0
+        u, v, _ = _CL_PLANES[plane]
+        start = self.at
+        sense = (k, j, i)[plane]
+        a = (start[u] - centre[u], start[v] - centre[v])
+        ccw: bool | None = None
+        for point in points if len(points) > 1 else ():
+            b = (point[u] - centre[u], point[v] - centre[v])
+            cross = a[0] * b[1] - a[1] * b[0]
+            if abs(cross) > 1e-12:
+                ccw = cross > 0
+                break
+        if ccw is None:
+            ccw = sense > 0
+        # the tool path's radius: APT's circle record is the drive surface, which the tool
+        # may be offset from (TLRGT), so the points, not r, give it
+        end = points[-1]
+        radius = hypot(end[u] - centre[u], end[v] - centre[v])
+        spec = self._arc_spec(centre, radius, u, v, ccw, points[:-1])
+        kind = self._kind()
+        if spec is None:  # the plane is not one the machine has: the post goes linear
+            for point in points:
+                self._target(point, kind, record, None)
+            return
+        self._target(points[-1], "feed", record, spec)
+
+    def _arc_spec(
+        self, centre: Point, radius: float, u: int, v: int, ccw: bool, on_arc: list[Point]
+    ) -> ArcSpec | None:
+        mu, mv = self.axes[u], self.axes[v]
+        if mu is None or mv is None:
+            return None
+        found = next(
+            (
+                (name, (mu[0], mv[0]) == axes)
+                for name, axes in PLANE_AXES.items()
+                if {mu[0], mv[0]} == set(axes)
+            ),
+            None,
+        )
+        if found is None:  # pragma: no cover - two distinct machine axes make a plane
+            return None
+        plane, in_order = found
+        same = (mu[1] * mv[1] > 0) == in_order
+        return ArcSpec(
+            self.machine_point(centre),
+            radius,
+            plane,
+            ccw if same else not ccw,
+            tuple(self.machine_point(p) for p in on_arc),
+            max(self.tolerances),
+        )
+
+
+def cl_path(records: Iterable[Record], machine: MachineDefinition) -> ClPath:
+    """The path of a CL file on a machine; InputError for what cannot be read."""
+    try:
+        return _Reader(machine).read(records)
+    except (ValueError, IndexError) as exc:
+        raise InputError(f"the CL file cannot be followed: {exc}", None) from None
+
+
+def radius_of(point: Point, centre: Point, plane: str) -> float:
+    first, second = PLANE_AXES[plane]
+    return hypot(point[first] - centre[first], point[second] - centre[second])

@@ -1,0 +1,170 @@
+"""The tape's path (rs274's moves) against the CL path: every CL point reached in order
+within the tolerance, by the kind of move the CL asks for; arcs with the CL's centre, radius
+and sense; feeds equal to the programmed ones. Between two CL points a straight cut may be
+split into several moves, each ending on the CL segment; a rapid move may go anywhere on its
+way (the control's own path); inside a canned cycle the control's moves stay on the hole's
+axis.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from math import hypot
+
+from gecent.core.verify.clpath import PLANE_AXES, ClPath, Point, Target, radius_of
+from gecent.core.verify.rs274 import TapeMove
+
+AXIS_NAMES = "XYZ"
+
+
+@dataclass(frozen=True, slots=True)
+class Mismatch:
+    target: Target
+    move: TapeMove | None
+    reason: str
+
+
+@dataclass
+class Comparison:
+    targets: int
+    moves: int
+    arcs: int = 0
+    feeds: int = 0
+    deviation: list[float] = field(default_factory=lambda: [0.0, 0.0, 0.0])
+    mismatch: Mismatch | None = None
+
+    @property
+    def passed(self) -> bool:
+        return self.mismatch is None
+
+
+def _segment_distance(point: Point, start: Point, end: Point, axes: tuple[int, ...]) -> float:
+    """The distance from ``point`` to the segment start-end over the compared axes."""
+    d = [end[a] - start[a] for a in axes]
+    w = [point[a] - start[a] for a in axes]
+    length = sum(c * c for c in d)
+    t = (
+        0.0
+        if length == 0
+        else max(0.0, min(1.0, sum(p * q for p, q in zip(w, d, strict=True)) / length))
+    )
+    return float(sum((w[i] - t * d[i]) ** 2 for i in range(len(axes))) ** 0.5)
+
+
+class _Walk:
+    def __init__(self, path: ClPath, moves: list[TapeMove], tolerance: float, feed_tol: float):
+        self.path = path
+        self.moves = moves
+        self.tolerance = tolerance
+        self.feed_tolerance = feed_tol
+        self.axes = path.compared
+        self.result = Comparison(len(path.targets), len(moves))
+
+    def close(self, a: Point, b: Point) -> bool:
+        return all(abs(a[i] - b[i]) <= self.tolerance for i in self.axes)
+
+    def note(self, tape: Point, cl: Point) -> None:
+        deviation = self.result.deviation
+        for i in self.axes:
+            deviation[i] = max(deviation[i], abs(tape[i] - cl[i]))
+
+    def run(self) -> Comparison:
+        at: Point = (0.0, 0.0, 0.0)  # rs274 starts at the origin
+        cl_at: Point | None = None
+        index = 0
+        for target in self.path.targets:
+            if target.arc is None and self.close(at, target.point):
+                self.note(at, target.point)
+                cl_at = target.point
+                continue
+            reached = False
+            while index < len(self.moves):
+                move = self.moves[index]
+                index += 1
+                problem = self.check(move, target, cl_at)
+                if problem is not None:
+                    self.result.mismatch = Mismatch(target, move, problem)
+                    return self.result
+                at = move.end
+                if self.close(at, target.point):
+                    self.note(at, target.point)
+                    reached = True
+                    break
+                if target.arc is not None:
+                    self.result.mismatch = Mismatch(
+                        target, move, "the arc does not end at the CL point"
+                    )
+                    return self.result
+            if not reached:
+                self.result.mismatch = Mismatch(target, None, "the tape ends before this point")
+                return self.result
+            cl_at = target.point
+        return self.result
+
+    def check(self, move: TapeMove, target: Target, cl_at: Point | None) -> str | None:
+        kind = target.kind
+        if kind == "rapid":
+            return None if move.kind == "rapid" else f"a {move.kind} move where the CL has RAPID"
+        if kind in ("cycle-entry", "cycle"):
+            if kind == "cycle" and cl_at is not None:
+                off = hypot(*(move.end[i] - cl_at[i] for i in self.axes if i != 2))
+                if off > self.tolerance:
+                    return f"leaves the hole's axis by {off:.4f}"
+            return self.feed_problem(move, target) if move.kind != "rapid" else None
+        if move.kind == "rapid":
+            return "a rapid move where the CL cuts at feed"
+        problem = self.feed_problem(move, target)
+        if problem is not None:
+            return problem
+        if target.arc is not None:
+            return self.arc_problem(move, target)
+        if move.kind == "arc":
+            return "an arc where the CL has a straight cut"
+        if cl_at is not None and not self.close(move.end, target.point):
+            off = _segment_distance(move.end, cl_at, target.point, self.axes)
+            if off > self.tolerance:
+                return f"ends {off:.4f} off the CL segment"
+        return None
+
+    def feed_problem(self, move: TapeMove, target: Target) -> str | None:
+        if target.feed is None:
+            return None
+        value, per_revolution = target.feed
+        self.result.feeds += 1
+        if per_revolution != move.per_revolution:
+            mode = "per revolution" if per_revolution else "per minute"
+            return f"feed mode: the CL's feed is {mode}"
+        if abs(move.feed - value) > self.feed_tolerance:
+            return f"feed {move.feed:g} where the CL has {value:g}"
+        return None
+
+    def arc_problem(self, move: TapeMove, target: Target) -> str | None:
+        arc = target.arc
+        assert arc is not None
+        if move.kind != "arc" or move.centre is None:
+            return "a straight move where the CL has an arc"
+        self.result.arcs += 1
+        if move.plane != arc.plane:
+            return f"an arc in the {move.plane} plane, the CL's is in {arc.plane}"
+        first, second = PLANE_AXES[arc.plane]
+        for axis in (first, second):
+            off = abs(move.centre[axis] - arc.centre[axis])
+            if off > self.tolerance:
+                return f"arc centre {AXIS_NAMES[axis]} is {off:.4f} off the CL's"
+        radius = radius_of(move.end, move.centre, arc.plane)
+        if abs(radius - arc.radius) > self.tolerance:
+            return f"arc radius {radius:.4f}, the CL's is {arc.radius:.4f}"
+        if (move.rotation > 0) != arc.counterclockwise:
+            sense = "counterclockwise" if arc.counterclockwise else "clockwise"
+            return f"the arc turns the wrong way (the CL's goes {sense})"
+        for point in arc.on_arc:
+            off = abs(radius_of(point, move.centre, arc.plane) - radius)
+            if off > self.tolerance + arc.slack:
+                return f"a CL point of the arc is {off:.4f} off the tape's arc"
+        return None
+
+
+def compare(
+    path: ClPath, moves: list[TapeMove], tolerance: float, feed_tolerance: float
+) -> Comparison:
+    return _Walk(path, moves, tolerance, feed_tolerance).run()

@@ -1,0 +1,10 @@
+"""fanuc-lathe: a modern-control machine pack, pure data (fanuc-lathe.toml,
+docs/modern-controls.md)."""
+
+from gecent.core.families import MachinePack
+from gecent.core.hookspecs import Register, hookimpl
+
+
+@hookimpl
+def register_machines(register: Register) -> None:
+    register(MachinePack.from_package(__package__ or __name__, "fanuc-lathe.toml"))

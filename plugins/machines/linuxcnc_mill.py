@@ -1,0 +1,10 @@
+"""linuxcnc-mill: a modern-control machine pack, pure data (linuxcnc-mill.toml,
+docs/modern-controls.md)."""
+
+from gecent.core.families import MachinePack
+from gecent.core.hookspecs import Register, hookimpl
+
+
+@hookimpl
+def register_machines(register: Register) -> None:
+    register(MachinePack.from_package(__package__ or __name__, "linuxcnc-mill.toml"))
