@@ -404,3 +404,78 @@ def verify_command(tape_path: str, cl_file: str, machine_key: str | None, tolera
     for line in result.report():
         click.echo(line)
     sys.exit(0 if result.passed else 1)
+
+
+@main.command("plot")
+@click.argument("input_path", metavar="INPUT", type=click.Path(dir_okay=False, exists=True))
+@click.option(
+    "-o",
+    "--output",
+    "output",
+    required=True,
+    type=click.Path(dir_okay=False),
+    help="The picture: FILE.png or FILE.svg.",
+)
+@click.option(
+    "--cl",
+    "cl_file",
+    type=click.Path(dir_okay=False, exists=True),
+    help="With a tape: the CL file, drawn under the tape's path.",
+)
+@click.option(
+    "--machine",
+    "machine_key",
+    metavar="ID",
+    help="Machine number, name or .toml file (default: MACHIN/GECENT in the CL file).",
+)
+@click.option(
+    "--plane",
+    type=click.Choice(["XY", "XZ", "YZ"]),
+    default="XY",
+    show_default=True,
+    help="The plane drawn (XZ for a lathe: Z across, X up).",
+)
+@_reporting_errors
+def plot_command(
+    input_path: str, output: str, cl_file: str | None, machine_key: str | None, plane: str
+) -> None:
+    """Backplot a tape (read by LinuxCNC's rs274; .ngc, .nc, .tap, .tape) or a CL file:
+    rapid moves dashed, feed moves solid, arcs as arcs."""
+    from gecent.core.cl.stream import read_cl
+    from gecent.core.machine.selection import first_machin, resolve_machine
+    from gecent.core.plot import cl_segments, is_tape, render, tape_segments
+    from gecent.core.verify.clpath import cl_path
+    from gecent.core.verify.rs274 import interpret
+
+    plugins = _plugins()
+    override: str | MachineDefinition | None = machine_key
+    if machine_key is not None and (machine_key.endswith(".toml") or os.sep in machine_key):
+        override = _load_machine(plugins, machine_key)
+    cl_source = cl_file if is_tape(input_path) else input_path
+    machine = None
+    if cl_source is not None:
+        request, _ = first_machin(read_cl(cl_source, plugins))
+        machine = resolve_machine(plugins, override, request)
+    elif override is not None:
+        machine = resolve_machine(plugins, override, None)
+    unit = "in" if machine is not None and machine.number_option(138) == 0 else "mm"
+    overlay = None
+    if is_tape(input_path):
+        diameter = machine is not None and machine.number_option(260) == 1
+        reading = interpret(input_path, diameter=diameter)
+        if reading.error is not None:
+            click.echo(
+                f"warning: rs274 stopped at tape line {reading.error_line}: "
+                f"{reading.error}; the path up to there is drawn",
+                err=True,
+            )
+        segments = tape_segments(reading.moves, plane)
+        unit = "in" if reading.units == "INCHES" else "mm"
+        if cl_file is not None and machine is not None:
+            overlay = cl_segments(cl_path(read_cl(cl_file, plugins), machine), plane)
+    else:
+        assert machine is not None
+        segments = cl_segments(cl_path(read_cl(input_path, plugins), machine), plane)
+    title = f"{Path(input_path).name} ({plane}, {len(segments)} moves)"
+    render(segments, output, plane=plane, title=title, overlay=overlay, unit=unit)
+    click.echo(f"plot: {len(segments)} moves drawn to {output}")

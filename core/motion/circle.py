@@ -21,7 +21,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from dataclasses import dataclass
-from math import atan2, hypot, pi, tau
+from math import atan2, hypot, tau
 
 from gecent.core.absent import ABSENT
 from gecent.core.cl.records import Circle, Motion, MotionSubtype
@@ -37,6 +37,9 @@ PLANES = ((0, 1, 2), (2, 0, 1), (1, 2, 0))
 # where an arc leaves quadrant q, as (du, dv) on the unit circle
 LEAVE_CCLW = {1: (0, 1), 2: (-1, 0), 3: (0, -1), 4: (1, 0)}
 LEAVE_CLW = {1: (1, 0), 2: (0, 1), 3: (-1, 0), 4: (0, -1)}
+# an arc whose end is within this many steps of its start is a full circle; a longer one
+# whose end rounds onto the start is a short arc, no move (docs/decisions.md)
+FULL_CIRCLE = 0.01
 NEAR = 0.95  # a whole arc's centre stays this many steps from the record's on each axis
 PLANE_CODES = (18, 19, 20)  # TABLEG: XY, ZX, YZ plane selection (001 L5124-5133)
 
@@ -190,7 +193,7 @@ class CircularMotion:
         code = Code(int((10 + self.plane) * (-1 if ccw else 1)))
         self._plane_block(arc.record)
         if self.whole:
-            self._whole(arc, code, first, last, crossings == 4)
+            self._whole(arc, code, first, last)
             return
         for index, corner in enumerate(points):
             self._segment(arc, corner, code, index, len(points), points)
@@ -255,11 +258,10 @@ class CircularMotion:
         code: Code,
         first: tuple[float, float],
         last: tuple[float, float],
-        long_way: bool,
     ) -> None:
         """The whole arc in one block: the end point, the centre words of option 252 and the
-        swept angle (for the cutting time). An end that rounds onto the start is a full
-        circle when the arc goes the long way round, else no move."""
+        swept angle (for the cutting time). An arc that ends where it began is a full
+        circle; one whose end only rounds onto its start is no move."""
         position = self.state.position
         u, v, _ = PLANES[self.plane]
         step = self.step
@@ -268,10 +270,10 @@ class CircularMotion:
         departures = [position.present[a] - position.previous[a] for a in range(3)]
         turn = atan2(last[1], last[0]) - atan2(first[1], first[0])
         sweep = (-turn if arc.clockwise else turn) % tau
-        if not any(departures):
-            if not long_way and sweep < pi:
-                return  # RETURN = -1: no move (001 L4283-4290)
-            sweep = tau
+        if hypot(last[0] - first[0], last[1] - first[1]) <= FULL_CIRCLE * step:
+            sweep = tau  # back where it started: a full circle (no CL arc has no length)
+        elif not any(departures):
+            return  # a short arc within one step: no move (RETURN = -1, 001 L4283-4290)
         block = Block.motion(
             code, arc.record.number, tuple(departures), tuple(position.present[:3]), step
         )

@@ -74,15 +74,14 @@ class ControlCycles:
         bottom = top - cycle.depth
         back = plane if cycle.return_level is None else max(first_z + tz, plane)
         machine = self.machine
-        if not self.active:
-            location = RETURN_R_PLANE if cycle.return_level is None else RETURN_INITIAL
-            code = machine.g_code(location)
-            assert code is not None  # check() made sure
-            if code != self.return_code:
-                g_block = Block(Code.G_ONLY, record)
-                g_block.cells[2] = code
-                self.output(g_block)
-                self.return_code = code
+        location = RETURN_R_PLANE if cycle.return_level is None else RETURN_INITIAL
+        code = machine.g_code(location)
+        assert code is not None  # check() made sure
+        if code != self.return_code:  # G98/G99 is modal: output when it changes
+            g_block = Block(Code.G_ONLY, record)
+            g_block.cells[2] = code
+            self.output(g_block)
+            self.return_code = code
         reached = (to_steps(x, self.step), to_steps(y, self.step), to_steps(back, self.step))
         block = Block(Code.CYCLE, record)
         block.steps = tuple(reached[a] - position.previous[a] for a in range(3))

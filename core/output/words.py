@@ -142,6 +142,7 @@ class WordFormatter:
             and float(block.cells[2]) == self.long_code
         )
         leading = self._leading_zero_rule(block)
+        cycle = block.code is Code.CYCLE  # its R is a level too: R0 is a position
         for formatter in self.formatters:
             location = formatter.location
             if long_departure and location in self.long_formatters:
@@ -173,7 +174,7 @@ class WordFormatter:
                 raise
             if (
                 location in ZERO_RULE_CELLS
-                and not (absolute and location <= 7)
+                and not (absolute and (location <= 7 or (location == 16 and cycle)))
                 and text.punched.strip("+-0.") == ""
             ):
                 if self.zero_rule in (0, -2):  # delete value and address (standard)
