@@ -60,7 +60,9 @@ def main() -> None:
         posted = time.perf_counter()
         tape = tape_image(result.blocks)
         taped = time.perf_counter()
-        frames = punch(tape.splitlines(), "eia", stand_in(machine, 64), stand_in(machine, 65))
+        # a modern tape's % has no EIA RS-244 code here: ASCII, as those controls read
+        code = "ascii" if result.machine.number_option(258) == 1 else "eia"
+        frames = punch(tape.splitlines(), code, stand_in(machine, 64), stand_in(machine, 65))
         punched = time.perf_counter()
         listing = printout.render(machine, result.blocks, result.partno)
         listed = time.perf_counter()
@@ -72,7 +74,7 @@ def main() -> None:
     for label, begin, end in (
         ("post (read, dispatch, motion, output)", start, posted),
         ("tape image", posted, taped),
-        ("EIA punch", taped, punched),
+        (f"{code.upper()} punch", taped, punched),
         ("GEOUT1 listing", punched, listed),
         ("all", start, listed),
     ):

@@ -15,6 +15,7 @@ def write_atomically(path: str | Path, data: bytes) -> None:
         directory = target.parent if str(target.parent) else Path(".")
         handle, temporary = tempfile.mkstemp(prefix=f".{target.name}.", dir=directory)
         try:
+            os.chmod(temporary, 0o666 & ~_umask())  # mkstemp's 0600 is for the temporary only
             with os.fdopen(handle, "wb") as stream:
                 stream.write(data)
             os.replace(temporary, target)
@@ -25,3 +26,9 @@ def write_atomically(path: str | Path, data: bytes) -> None:
         raise InputError(
             f"cannot write output: {exc.strerror}", SourcePosition(str(target))
         ) from None
+
+
+def _umask() -> int:
+    mask = os.umask(0)
+    os.umask(mask)
+    return mask
