@@ -162,6 +162,13 @@ def _load_machine(plugins: PluginSet, key: str) -> MachineDefinition:
     return pack.load()
 
 
+def _override(plugins: PluginSet, key: str | None) -> str | MachineDefinition | None:
+    """--machine: a machine file is loaded here, a number or name is resolved by the run."""
+    if key is not None and (key.endswith(".toml") or os.sep in key):
+        return _load_machine(plugins, key)
+    return key
+
+
 def _missing(key: str) -> MachineDefinition:
     raise InputError(f"machine file {key!r} does not exist")
 
@@ -226,9 +233,7 @@ def post(
 ) -> None:
     """Postprocess a CL file into a tape image and a printed listing."""
     plugins = _plugins()
-    override: str | MachineDefinition | None = machine_key
-    if machine_key is not None and (machine_key.endswith(".toml") or os.sep in machine_key):
-        override = _load_machine(plugins, machine_key)
+    override = _override(plugins, machine_key)
     try:
         result = run_post(input_path, plugins, override, _progress(input_path))
     except GecentError as error:
@@ -397,9 +402,7 @@ def verify_command(tape_path: str, cl_file: str, machine_key: str | None, tolera
     from gecent.core.verify.check import verify
 
     plugins = _plugins()
-    override: str | MachineDefinition | None = machine_key
-    if machine_key is not None and (machine_key.endswith(".toml") or os.sep in machine_key):
-        override = _load_machine(plugins, machine_key)
+    override = _override(plugins, machine_key)
     result = verify(tape_path, cl_file, plugins, override, tolerance)
     for line in result.report():
         click.echo(line)
@@ -442,20 +445,18 @@ def plot_command(
     """Backplot a tape (read by LinuxCNC's rs274; .ngc, .nc, .tap, .tape) or a CL file:
     rapid moves dashed, feed moves solid, arcs as arcs."""
     from gecent.core.cl.stream import read_cl
-    from gecent.core.machine.selection import first_machin, resolve_machine
+    from gecent.core.machine.selection import resolve_machine
     from gecent.core.plot import cl_segments, is_tape, render, tape_segments
+    from gecent.core.verify.check import cl_machine
     from gecent.core.verify.clpath import cl_path
     from gecent.core.verify.rs274 import interpret
 
     plugins = _plugins()
-    override: str | MachineDefinition | None = machine_key
-    if machine_key is not None and (machine_key.endswith(".toml") or os.sep in machine_key):
-        override = _load_machine(plugins, machine_key)
+    override = _override(plugins, machine_key)
     cl_source = cl_file if is_tape(input_path) else input_path
     machine = None
     if cl_source is not None:
-        request, _ = first_machin(read_cl(cl_source, plugins))
-        machine = resolve_machine(plugins, override, request)
+        machine = cl_machine(cl_source, plugins, override)
     elif override is not None:
         machine = resolve_machine(plugins, override, None)
     unit = "in" if machine is not None and machine.number_option(138) == 0 else "mm"

@@ -250,3 +250,23 @@ class TableSpindle:
         self, machine: MachineDefinition, range_number: int
     ) -> tuple[float, ...] | None:
         return self.ranges(machine)[range_number - 1]
+
+
+class OneRangeSpindle:
+    """A variable type with one range, SRTAB(1) lowest .. SRTAB(2) highest: ``limits``
+    (checked by each type) gives the range's limits; SFM steps through it by option 15
+    unless the type lists the speeds it can be commanded (``table_speeds``)."""
+
+    def limits(self, machine: MachineDefinition) -> tuple[float, float]:
+        raise NotImplementedError
+
+    def range_count(self, machine: MachineDefinition) -> int:
+        return 1
+
+    def speed_limits(self, machine: MachineDefinition, range_number: int) -> tuple[float, float]:
+        return self.limits(machine)
+
+    def table_speeds(
+        self, machine: MachineDefinition, range_number: int
+    ) -> tuple[float, ...] | None:
+        return None  # variable: SFM steps by option 15

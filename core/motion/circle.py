@@ -29,11 +29,10 @@ from gecent.core.errors import Diagnostic, FatalError, NotYetSupported
 from gecent.core.machine.shuffle import cell_map
 from gecent.core.motion.rounding import round_to_step, to_steps
 from gecent.core.output.block import Block, Code
-from gecent.core.output.modern import machine_planes
+from gecent.core.output.modern import CL_PLANES, machine_planes
 from gecent.core.state import PostState
 
-# (u, v, normal) axis indices per plane: IPLANE 0 = XY, 1 = ZX, 2 = YZ (right-handed)
-PLANES = ((0, 1, 2), (2, 0, 1), (1, 2, 0))
+PLANES = CL_PLANES  # IPLANE 0 = XY, 1 = ZX, 2 = YZ
 # where an arc leaves quadrant q, as (du, dv) on the unit circle
 LEAVE_CCLW = {1: (0, 1), 2: (-1, 0), 3: (0, -1), 4: (1, 0)}
 LEAVE_CLW = {1: (1, 0), 2: (0, 1), 3: (-1, 0), 4: (0, -1)}

@@ -18,7 +18,7 @@ The tool then stays at the return level: the next point's departures start there
 from __future__ import annotations
 
 from collections.abc import Callable
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from gecent.core.cl.records import Statement, Word
 from gecent.core.errors import Diagnostic, InputError, NotYetSupported
@@ -110,6 +110,18 @@ def parse_cycle(statement: Statement, warn: Callable[[Diagnostic], None]) -> Cyc
         named.get("RETURN"),
         named.get("DWELL", 0.0),
         feed,
+    )
+
+
+def in_machine_units(cycle: Cycle, length: Callable[[float], float]) -> Cycle:
+    """The cycle's distances in machine units (its feed keeps its own unit word)."""
+    return replace(
+        cycle,
+        depth=length(cycle.depth),
+        clearance=length(cycle.clearance),
+        step=None if cycle.step is None else length(cycle.step),
+        rapto=length(cycle.rapto),
+        return_level=None if cycle.return_level is None else length(cycle.return_level),
     )
 
 

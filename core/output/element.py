@@ -19,10 +19,11 @@ from gecent.core.feed.optimise import FeedOptimiser
 from gecent.core.feed.positioning import XY, FeedContext, FeedType, Z
 from gecent.core.motion.gcode import CircularCodes, DimensionCode, LinearCodes, RotaryCodes
 from gecent.core.motion.limits import SlideLimits
+from gecent.core.motion.linear import TWO_AXIS
 from gecent.core.motion.rotary import UNITS_PER_DEGREE
 from gecent.core.output.block import Block, Code
 from gecent.core.output.marks import stand_in
-from gecent.core.output.modern import ModernControl, machine_planes
+from gecent.core.output.modern import CL_PLANES, ModernControl, machine_planes
 from gecent.core.output.words import WordFormatter
 from gecent.core.reinstate import SPINDLE_COMMAND
 from gecent.core.state import PostState
@@ -42,7 +43,6 @@ POSITION_CODES = frozenset({Code.POSITION_XY, Code.POSITION_Z})
 THREAD_CODES = frozenset({Code.THREAD_5, Code.THREAD_6})
 # blocks whose absolute positions replace their departures under option 251 = 1
 PLACED_CODES = MOTION_CODES | THREAD_CODES
-_IN_PLANE = ((0, 1), (2, 0), (1, 2))  # a circle states both axes of its CL plane
 # blocks whose cells 3..10 are registers already, not internal axes for SHUFFL
 UNSHUFFLED = frozenset({Code.DWELL})
 # numeric blocks that get TABLEG(5) when they have no G and option 38 = +-1 (001 L24890-24907)
@@ -91,7 +91,7 @@ class OutputElement:
         self.milling = False
         # option 1 = 1: a positioning block with a T repeats the spindle command (-1: not)
         self.merge_s_with_t = machine.number_option(1) == 1
-        axes = 2 if machine.number_option(22) in (11.0, 101.0, 110.0) else 3
+        axes = 2 if machine.number_option(22) in TWO_AXIS else 3
         self.modern = ModernControl(machine, self.step, axes)
         # options 252 != 0: G02/G03 in the machine's plane, mirrored by SHUFFL's signs
         self.mirrored = tuple(
@@ -452,7 +452,10 @@ class OutputElement:
         placed = modern.absolute and block.position is not None and block.code in PLACED_CODES
         if placed:
             assert block.position is not None
-            keep = () if block.code not in CIRCLE_CODES else _IN_PLANE[abs(int(block.code)) - 10]
+            # a circle states both axes of its CL plane
+            keep = (
+                () if block.code not in CIRCLE_CODES else CL_PLANES[abs(int(block.code)) - 10][:2]
+            )
             modern.place(block, block.position, keep)
         if block.code not in UNSHUFFLED:
             self.words.shuffle_block(block)

@@ -29,7 +29,8 @@ RAPID_TRAVERSE = 127
 ABSOLUTE_INPUT, INCREMENTAL_INPUT = 96, 97
 CUTCOM_OFF, CYCLE_OFF = 40, 1
 PLANE_LOCATIONS = {(3, 4): 18, (5, 3): 19, (4, 5): 20}  # machine XY, ZX, YZ: TABLEG 18-20
-_CL_PLANES = ((0, 1), (2, 0), (1, 2))  # CL XY, ZX, YZ as (u, v) axis indices
+# (u, v, normal) axis indices of the CL planes XY, ZX, YZ (right-handed: u x v = normal)
+CL_PLANES = ((0, 1, 2), (2, 0, 1), (1, 2, 0))
 
 
 def machine_planes(
@@ -39,7 +40,7 @@ def machine_planes(
     output on (None when an axis is not output), and whether the shuffle mirrors the plane
     (one axis reversed, or the two axes swapped), which turns G02 into G03."""
     planes: list[tuple[int | None, bool]] = []
-    for u, v in _CL_PLANES:
+    for u, v, _ in CL_PLANES:
         first, second = shuffle[u], shuffle[v]
         if first is None or second is None:
             planes.append((None, False))

@@ -8,12 +8,11 @@ core/motion/control_cycles.py (G81-G85)."""
 
 from __future__ import annotations
 
-from dataclasses import replace
 from typing import TYPE_CHECKING
 
 from gecent.core.cl.records import Statement
 from gecent.core.errors import Diagnostic, NotYetSupported
-from gecent.core.motion.cycles import CYCLE_TYPES, parse_cycle
+from gecent.core.motion.cycles import CYCLE_TYPES, in_machine_units, parse_cycle
 from gecent.core.statements.feed import program_feed
 
 # the control's own cycle block holds G, Z and R only (CYCLGP, 001 L30164-30178)
@@ -65,14 +64,7 @@ def cycle(run: Run, statement: Statement) -> None:
             statement.where,
         )
     units = run.units
-    run.cycle = replace(
-        parsed,
-        depth=units.length(parsed.depth),
-        clearance=units.length(parsed.clearance),
-        step=None if parsed.step is None else units.length(parsed.step),
-        rapto=units.length(parsed.rapto),
-        return_level=None if parsed.return_level is None else units.length(parsed.return_level),
-    )
+    run.cycle = in_machine_units(parsed, units.length)
     run.cycle_first_z = None
     if control:
         element = run.control_cycle_element()

@@ -68,6 +68,18 @@ class Verification:
         return self.tape_lines[line - 1].strip()
 
 
+def cl_machine(
+    cl_file: str, plugins: PluginSet, machine_key: str | MachineDefinition | None
+) -> MachineDefinition:
+    """The machine a CL file is posted on: --machine, else its MACHIN/GECENT with the
+    statement's OPTAB changes and LINEAR/LINCIR, as the post chooses it."""
+    request, _ = first_machin(read_cl(cl_file, plugins))
+    machine = resolve_machine(plugins, machine_key, request)
+    if request is not None and machine_key is None and request.number is not None:
+        machine = apply_machin_options(machine, request)[0]
+    return machine
+
+
 def verify(
     tape_path: str,
     cl_file: str,
@@ -75,10 +87,7 @@ def verify(
     machine_key: str | MachineDefinition | None = None,
     tolerance_mm: float = DEFAULT_TOLERANCE_MM,
 ) -> Verification:
-    request, _ = first_machin(read_cl(cl_file, plugins))
-    machine = resolve_machine(plugins, machine_key, request)
-    if request is not None and machine_key is None and request.number is not None:
-        machine = apply_machin_options(machine, request)[0]  # MACHIN/...,OPTAB and LINEAR
+    machine = cl_machine(cl_file, plugins, machine_key)
     path = cl_path(read_cl(cl_file, plugins), machine)
     reading = interpret(tape_path, diameter=machine.number_option(260) == 1)
     unit = "in" if reading.units == "INCHES" else "mm"

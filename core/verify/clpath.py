@@ -14,7 +14,7 @@ so no doubling here.
 from __future__ import annotations
 
 from collections.abc import Iterable
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, field
 from math import hypot
 
 from gecent.core.cl.records import (
@@ -25,18 +25,20 @@ from gecent.core.cl.records import (
     MotionSubtype,
     Record,
     Statement,
+    Word,
 )
 from gecent.core.errors import Diagnostic, InputError, NotYetSupported, SourcePosition
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.machine.shuffle import cell_map
-from gecent.core.motion.cycles import Cycle, cycle_legs, parse_cycle
+from gecent.core.motion.cycles import Cycle, cycle_legs, in_machine_units, parse_cycle
+from gecent.core.motion.linear import TWO_AXIS
+from gecent.core.output.modern import CL_PLANES
 from gecent.core.statements.feed import scan_fedrat
 from gecent.core.units import UnitScale
 
 Point = tuple[float, float, float]
 # rs274's ARC_FEED plane axes, (first, second) machine axis indices
 PLANE_AXES = {"XY": (0, 1), "XZ": (2, 0), "YZ": (1, 2)}
-_CL_PLANES = ((0, 1, 2), (2, 0, 1), (1, 2, 0))  # (u, v, normal) for CL XY, ZX, YZ
 
 
 @dataclass(frozen=True, slots=True)
@@ -75,7 +77,7 @@ class _Reader:
         self.machine = machine
         self.units = UnitScale(machine)
         shuffle = cell_map(machine.number_option(59), "XYZ")
-        two_axes = machine.number_option(22) in (11.0, 101.0, 110.0)
+        two_axes = machine.number_option(22) in TWO_AXIS
         self.axes = [
             None if target is None or (two_axes and axis == 2) else (target[0] - 3, target[1])
             for axis, target in enumerate(shuffle)
@@ -147,36 +149,24 @@ class _Reader:
             self.rapid_modal = False
             request = scan_fedrat(statement)
             if request.value is not None:
-                unit = request.unit
-                if unit is not None:
-                    self.per_revolution = unit.name in ("IPR", "MMPR")
-                self.feed = (self.units.per_minute(request.value, unit), self.per_revolution)
+                self._program_feed(request.value, request.unit)
         elif major == "TRANS":
             numbers = [self.units.length(v) for v in statement.numbers()]
             x, y, z = (*numbers, 0.0, 0.0, 0.0)[:3]
             self.translation = (x, y, z)
         elif major == "CYCLE":
             parsed = parse_cycle(statement, lambda note: None)
-            units = self.units
-            self.cycle = (
-                None
-                if parsed is None
-                else replace(
-                    parsed,
-                    depth=units.length(parsed.depth),
-                    clearance=units.length(parsed.clearance),
-                    step=None if parsed.step is None else units.length(parsed.step),
-                    rapto=units.length(parsed.rapto),
-                    return_level=None
-                    if parsed.return_level is None
-                    else units.length(parsed.return_level),
-                )
-            )
+            self.cycle = None if parsed is None else in_machine_units(parsed, self.units.length)
             self.cycle_first_z = None
             if parsed is not None and parsed.feed is not None:
-                value, unit = parsed.feed
-                self.per_revolution = unit is not None and unit.name in ("IPR", "MMPR")
-                self.feed = (self.units.per_minute(value, unit), self.per_revolution)
+                self._program_feed(*parsed.feed)
+
+    def _program_feed(self, value: float, unit: Word | None) -> None:
+        """A feed in machine units, per revolution as its unit word says, or without one in
+        the last mode (as FEDRAT and a cycle's feed program it in the post)."""
+        if unit is not None:
+            self.per_revolution = unit.name in ("IPR", "MMPR")
+        self.feed = (self.units.per_minute(value, unit), self.per_revolution)
 
     def _kind(self) -> str:
         rapid = self.rapid_once or self.rapid_modal
@@ -231,7 +221,7 @@ class _Reader:
         centre = (xc + tx, yc + ty, zc + tz)
         epsilon = self.machine.number_option(5)
         plane = 2 if abs(i) > epsilon else 1 if abs(j) > epsilon else 0
-        u, v, _ = _CL_PLANES[plane]
+        u, v, _ = CL_PLANES[plane]
         start = self.at
         sense = (k, j, i)[plane]
         a = (start[u] - centre[u], start[v] - centre[v])

@@ -15,7 +15,7 @@ from gecent.core.errors import MachineDefinitionError
 from gecent.core.feed.magic3 import magic3
 from gecent.core.hookspecs import Register, hookimpl
 from gecent.core.machine.definition import MachineDefinition
-from gecent.core.spindle_types import SpindleRequest, SpindleSelection, limited
+from gecent.core.spindle_types import OneRangeSpindle, SpindleRequest, SpindleSelection, limited
 
 # One range of a minimum and a maximum speed (option 7 = 1, option 8 = 2, 001 L14646-14654);
 # the limits span the manual's examples 137.2 RPM -> S614 and 0.0123 RPM -> S212 and reach
@@ -34,7 +34,7 @@ speeds = [0.01, 9999.0]
 
 
 @dataclass(frozen=True)
-class EiaThreeDigitSpindle:
+class EiaThreeDigitSpindle(OneRangeSpindle):
     number: int = 1
     name: str = "EIA 3-digit code number (variable spindle)"
     section: str = "§4.5.2"
@@ -51,17 +51,6 @@ class EiaThreeDigitSpindle:
                 f"0 < minimum <= maximum <= 9999 RPM; found {list(speeds[:2])}",
             )
         return speeds[0], speeds[1]
-
-    def range_count(self, machine: MachineDefinition) -> int:
-        return 1
-
-    def speed_limits(self, machine: MachineDefinition, range_number: int) -> tuple[float, float]:
-        return self.limits(machine)
-
-    def table_speeds(
-        self, machine: MachineDefinition, range_number: int
-    ) -> tuple[float, ...] | None:
-        return None  # variable: SFM steps by option 15
 
     def select(self, machine: MachineDefinition, request: SpindleRequest) -> SpindleSelection:
         low, high = self.limits(machine)

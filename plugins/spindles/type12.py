@@ -22,7 +22,7 @@ from dataclasses import dataclass
 from gecent.core.errors import MachineDefinitionError
 from gecent.core.hookspecs import Register, hookimpl
 from gecent.core.machine.definition import MachineDefinition
-from gecent.core.spindle_types import SpindleRequest, SpindleSelection, limited
+from gecent.core.spindle_types import OneRangeSpindle, SpindleRequest, SpindleSelection, limited
 
 TENS_FROM = 200.0  # from here up, the command is a multiple of 10 (001 L15175-15179)
 CROSS_OVER = 199.0  # the standard cross-over speed when option 196 = 0 (001 L15181)
@@ -50,7 +50,7 @@ def speed_command(speed: float) -> float:
 
 
 @dataclass(frozen=True)
-class SpeedCommandSpindle:
+class SpeedCommandSpindle(OneRangeSpindle):
     number: int = 12
     name: str = "command equal to selected speed"
     section: str = "§4.5.13"
@@ -74,12 +74,6 @@ class SpeedCommandSpindle:
                 f"{list(speeds[:2])} with option 7 = {machine.number_option(7):g}",
             )
         return speeds[0], speeds[1]
-
-    def range_count(self, machine: MachineDefinition) -> int:
-        return 1
-
-    def speed_limits(self, machine: MachineDefinition, range_number: int) -> tuple[float, float]:
-        return self.limits(machine)
 
     def table_speeds(
         self, machine: MachineDefinition, range_number: int

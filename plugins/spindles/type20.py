@@ -16,7 +16,7 @@ from gecent.core.errors import MachineDefinitionError
 from gecent.core.hookspecs import Register, hookimpl
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.motion.rounding import half_up
-from gecent.core.spindle_types import SpindleRequest, SpindleSelection, limited
+from gecent.core.spindle_types import OneRangeSpindle, SpindleRequest, SpindleSelection, limited
 
 EXAMPLE = """
 [machine]
@@ -32,7 +32,7 @@ speeds = [50.0, 24000.0]
 
 
 @dataclass(frozen=True)
-class DirectRpmSpindle:
+class DirectRpmSpindle(OneRangeSpindle):
     number: int = 20
     name: str = "S in RPM (modern controls)"
     section: str = "§4.5 (gecent type, docs/modern-controls.md)"
@@ -50,17 +50,6 @@ class DirectRpmSpindle:
                 f"with option 7 = {machine.number_option(7):g}",
             )
         return speeds[0], speeds[1]
-
-    def range_count(self, machine: MachineDefinition) -> int:
-        return 1
-
-    def speed_limits(self, machine: MachineDefinition, range_number: int) -> tuple[float, float]:
-        return self.limits(machine)
-
-    def table_speeds(
-        self, machine: MachineDefinition, range_number: int
-    ) -> tuple[float, ...] | None:
-        return None  # variable: SFM steps by option 15
 
     def select(self, machine: MachineDefinition, request: SpindleRequest) -> SpindleSelection:
         low, high = self.limits(machine)
