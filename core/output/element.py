@@ -41,6 +41,9 @@ CIRCLE_CODES = frozenset(
 MOTION_CODES = frozenset({Code.LINEAR}) | CIRCLE_CODES
 POSITION_CODES = frozenset({Code.POSITION_XY, Code.POSITION_Z})
 THREAD_CODES = frozenset({Code.THREAD_5, Code.THREAD_6})
+# blocks that move the tool (their G and F are modal) and blocks of absolute positions
+MOVING_CODES = MOTION_CODES | POSITION_CODES | {Code.ROTARY_INCREMENTAL, Code.CYCLE}
+ABSOLUTE_CODES = POSITION_CODES | {Code.CYCLE}
 # blocks whose absolute positions replace their departures under option 251 = 1
 PLACED_CODES = MOTION_CODES | THREAD_CODES
 # blocks whose cells 3..10 are registers already, not internal axes for SHUFFL
@@ -449,41 +452,36 @@ class OutputElement:
             self.emitted.append(block)
             return
         modern = self.modern
-        placed = modern.absolute and block.position is not None and block.code in PLACED_CODES
-        if placed:
-            assert block.position is not None
+        placed = False
+        if modern.absolute and block.position is not None and block.code in PLACED_CODES:
             # a circle states both axes of its CL plane
             keep = (
                 () if block.code not in CIRCLE_CODES else CL_PLANES[abs(int(block.code)) - 10][:2]
             )
             modern.place(block, block.position, keep)
+            placed = True
         if block.code not in UNSHUFFLED:
             self.words.shuffle_block(block)
-        motion = (
-            block.code in MOTION_CODES
-            or block.code in POSITION_CODES
-            or block.code is Code.ROTARY_INCREMENTAL
-            or block.code is Code.CYCLE
-        )
+        code = block.code
+        motion = code in MOVING_CODES
         words = self.words.words(
             block,
             suppress=motion,
             sequence=self.state.sequence,
-            absolute=block.code in POSITION_CODES or placed or block.code is Code.CYCLE,
+            absolute=placed or code in ABSOLUTE_CODES,
         )
-        if block.cells[13] is not ABSENT:
-            modern.forget()  # a tool change: the next move states every axis
-        if block.cells[14] is not ABSENT and block.cells[14] == self.end_code:
-            modern.ended = True
-        elif motion:
-            modern.ended = False
+        if modern.active:
+            if block.cells[13] is not ABSENT:
+                modern.forget()  # a tool change: the next move states every axis
+            if block.cells[14] is not ABSENT and block.cells[14] == self.end_code:
+                modern.ended = True
+            elif motion:
+                modern.ended = False
         if not motion and block.cells[2] is not ABSENT:
             self.words.previous_g = ABSENT  # a G04 or other G came between: repeat the motion G
         block.words = tuple((location, printed) for location, _, printed, _ in words)
         if block.punched:
-            punch = self.separator.join(
-                letter + punched for _, letter, _, punched in words if letter + punched
-            )
+            punch = self.separator.join(letter + punched for _, letter, _, punched in words)
             block.punch = "/" + punch if block.skipped else punch
         self.emitted.append(block)
 
