@@ -5,11 +5,13 @@ from __future__ import annotations
 import io
 import json
 import os
+import signal
 import sys
+import threading
 from collections.abc import Callable, Iterable, Iterator
 from functools import wraps
 from pathlib import Path
-from typing import Any, TypeVar
+from typing import IO, Any, TypeVar
 
 import click
 from gecent.core import __version__
@@ -18,17 +20,30 @@ from gecent.core.cl.binary_writer import write_binary
 from gecent.core.cl.clprint import clprint_lines, record_json
 from gecent.core.cl.records import Record
 from gecent.core.cl.stream import read_cl
-from gecent.core.errors import EXIT_INTERNAL, GecentError, InputError, NotYetSupported
+from gecent.core.errors import (
+    EXIT_INTERNAL,
+    Diagnostic,
+    GecentError,
+    InputError,
+    NotYetSupported,
+)
 from gecent.core.families import FAMILIES, MachinePack
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.machine.describe import describe_machine, machine_as_dict
+from gecent.core.motion.guard import DEFAULT_MAX_SEGMENTS
 from gecent.core.output.files import write_atomically
-from gecent.core.output.jsonlines import json_lines
 from gecent.core.output.marks import stand_in
-from gecent.core.output.punch import punch
-from gecent.core.output.tape import tape_image
+from gecent.core.output.modern import modern_output
+from gecent.core.output.punch import Puncher
+from gecent.core.output.sinks import (
+    Ending,
+    JsonSink,
+    ListingSink,
+    PunchSink,
+    Sinks,
+    TapeSink,
+)
 from gecent.core.plugins import PluginSet, get_plugins
-from gecent.core.run import RunResult
 from gecent.core.run import post as run_post
 
 F = TypeVar("F", bound=Callable[..., Any])
@@ -200,13 +215,14 @@ def machine_show(key: str, show_all: bool, as_json: bool) -> None:
     "--output",
     "tape_path",
     type=click.Path(dir_okay=False),
-    help="Tape image file (default: INPUT with .tape).",
+    help="Tape image file (default: INPUT's name with .tape, in the current folder).",
 )
 @click.option(
     "--listing",
     "listing_path",
     type=click.Path(dir_okay=False),
-    help="Printed listing file (default: INPUT with .lis).",
+    help="Printed listing file (default: beside the tape with .lis; on G-code machines "
+    "none unless given).",
 )
 @click.option(
     "--punch",
@@ -222,6 +238,13 @@ def machine_show(key: str, show_all: bool, as_json: bool) -> None:
     is_flag=True,
     help="Also print the blocks on standard output as JSON lines, one object per block.",
 )
+@click.option(
+    "--max-segments",
+    type=click.IntRange(min=0),
+    default=DEFAULT_MAX_SEGMENTS,
+    show_default=True,
+    help="Most segment blocks one CL move may make (0: no bound); a longer move is refused.",
+)
 @_reporting_errors
 def post(
     input_path: str,
@@ -230,39 +253,79 @@ def post(
     listing_path: str | None,
     punch_to: tuple[str, str] | None,
     as_json: bool,
+    max_segments: int,
 ) -> None:
-    """Postprocess a CL file into a tape image and a printed listing."""
+    """Postprocess a CL file into a tape image and a printed listing.
+
+    Outputs go where they are named; a tape with no -o goes to the current folder as
+    INPUT's name with .tape, the listing beside the tape with .lis (on machines whose tape
+    is G-code for a modern control, only when --listing asks). Nothing is written into the
+    input's folder unless named there."""
+    _terminate_cleanly()
     plugins = _plugins()
     override = _override(plugins, machine_key)
-    try:
-        result = run_post(input_path, plugins, override, _progress(input_path))
-    except GecentError as error:
-        if isinstance(error.partial, RunResult):  # a fatal error: the listing and its dump
-            _write_stopped_listing(plugins, error.partial, input_path, listing_path)
-        raise
-    layout = int(result.machine.number_option(164))
-    printout = plugins.get("printouts", layout)
-    if printout is None:
-        raise NotYetSupported(f"printout GEOUT{layout} (option 164 = {layout})")
-    listing = printout.render(result.machine, result.blocks, result.partno)
-    tape = tape_image(result.blocks)
-    machine = result.machine
-    frames = (
-        punch(tape.splitlines(), punch_to[0], stand_in(machine, 64), stand_in(machine, 65))
-        if punch_to
-        else None
-    )
-    stem = Path(input_path)
-    if not result.punch_suppressed:  # option 110 = +2 after a slide limit: listing only
-        write_atomically(tape_path or stem.with_suffix(".tape"), tape.encode("ascii", "replace"))
-    write_atomically(listing_path or stem.with_suffix(".lis"), listing.encode("utf-8"))
-    if frames is not None and not result.punch_suppressed:
-        write_atomically(punch_to[1], frames)  # type: ignore[index]
-    for diagnostic in result.diagnostics:
+    tape_target = Path(tape_path) if tape_path else Path(Path(input_path).stem + ".tape")
+
+    def make_sinks(machine: MachineDefinition) -> Sinks:
+        listing = listing_path
+        if listing is None and not modern_output(machine):
+            listing = str(tape_target.with_suffix(".lis"))
+        return _output_sinks(
+            plugins, machine, tape_target, listing, punch_to, sys.stdout if as_json else None
+        )
+
+    def report(diagnostic: Diagnostic) -> None:
         click.echo(str(diagnostic), err=True)
-    if as_json:
-        for line in json_lines(result.blocks, machine):
-            click.echo(line)
+
+    run_post(
+        input_path, plugins, override, _progress(input_path), make_sinks, report, max_segments
+    )
+
+
+def _terminate_cleanly() -> None:
+    """SIGTERM (a job killed by its scheduler, a timeout) unwinds the run like Ctrl-C does,
+    so the sinks remove their temporary files."""
+
+    def stop(signum: int, frame: object) -> None:
+        raise SystemExit(128 + signum)
+
+    if threading.current_thread() is threading.main_thread():
+        signal.signal(signal.SIGTERM, stop)
+
+
+def _output_sinks(
+    plugins: PluginSet,
+    machine: MachineDefinition,
+    tape: Path,
+    listing: str | None,
+    punch_to: tuple[str, str] | None,
+    json_stream: IO[str] | None,
+) -> Sinks:
+    """The run's outputs: what can be refused (the printout, the tape code) is looked at
+    before any file is opened."""
+    sinks = Sinks()
+    writer = None
+    if listing is not None:
+        layout = int(machine.number_option(164))
+        printout = plugins.get("printouts", layout)
+        if printout is None:
+            raise NotYetSupported(f"printout GEOUT{layout} (option 164 = {layout})")
+        writer = printout.listing(machine, lambda: sinks.partno)
+    puncher = (
+        Puncher(punch_to[0], stand_in(machine, 64), stand_in(machine, 65)) if punch_to else None
+    )
+    try:
+        sinks.add(TapeSink(tape))
+        if writer is not None and listing is not None:
+            sinks.add(ListingSink(listing, writer))
+        if puncher is not None and punch_to is not None:
+            sinks.add(PunchSink(punch_to[1], puncher))
+        if json_stream is not None:
+            sinks.add(JsonSink(json_stream, machine))
+    except BaseException:
+        sinks.close(Ending(False))
+        raise
+    return sinks
 
 
 def _progress(input_path: str) -> Callable[[Iterator[Record]], Iterator[Record]] | None:
@@ -284,20 +347,6 @@ def _progress(input_path: str) -> Callable[[Iterator[Record]], Iterator[Record]]
         yield from tqdm(records, total=total, unit=" records", leave=False, file=sys.stderr)
 
     return watch
-
-
-def _write_stopped_listing(
-    plugins: PluginSet, result: RunResult, input_path: str, listing_path: str | None
-) -> None:
-    """The listing of what was output before a fatal error, then the GEDUMP dump."""
-    printout = plugins.get("printouts", int(result.machine.number_option(164)))
-    try:
-        text = printout.render(result.machine, result.blocks, result.partno) if printout else ""
-    except GecentError:
-        text = ""  # the printout itself cannot be made: the dump alone
-    text += "\n".join(result.dump) + "\n"
-    target = listing_path or Path(input_path).with_suffix(".lis")
-    write_atomically(target, text.encode("utf-8"))
 
 
 def _layout(name: str | None) -> Layout | None:

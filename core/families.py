@@ -18,7 +18,7 @@ CL readers                register_cl_readers        the input file's content
 
 from __future__ import annotations
 
-from collections.abc import Callable, Iterator, Mapping
+from collections.abc import Callable, Iterable, Iterator, Mapping
 from dataclasses import dataclass, field
 from enum import Enum
 from functools import cached_property
@@ -175,12 +175,17 @@ class ClReader(Protocol):
 
 
 class Printout(Protocol):
-    """A printed listing layout (GEOUT1-4)."""
+    """A printed listing layout (GEOUT1-4): ``listing`` makes the pages as blocks come
+    (a :class:`gecent.core.output.sinks.ListingWriter`), ``render`` a whole list at once."""
 
     number: int
     name: str
     section: str
     template: ClassVar[str]
+
+    def listing(self, machine: MachineDefinition, partno: Callable[[], str]) -> Any: ...
+
+    def render(self, machine: MachineDefinition, blocks: Iterable[Any], partno: str) -> str: ...
 
 
 def describe_option(option: int | None) -> str:

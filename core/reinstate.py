@@ -13,42 +13,20 @@ reading, "negative = already output, skip").
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
-from typing import TYPE_CHECKING
-
+from gecent.core.dispatch.context import Post
 from gecent.core.output.block import Block, Code
-
-if TYPE_CHECKING:
-    from gecent.core.run import Run
-
-T_CODE, SPINDLE_COMMAND, SPINDLE_M, SPINDLE_RANGE, SFM, FEED_M, FEED_M2, COOLANT, COOLANT2 = range(
-    1, 10
+from gecent.core.state import (
+    COOLANT,
+    COOLANT2,
+    FEED_M,
+    FEED_M2,
+    SPINDLE_COMMAND,
+    SPINDLE_M,
+    T_CODE,
 )
 
 
-@dataclass(slots=True)
-class StateVector:
-    """STATE(1..9): the last value of each condition; ``None`` for an absent or OFF one."""
-
-    values: dict[int, float] = field(default_factory=dict)
-    respecified: set[int] = field(default_factory=set)
-
-    def store(self, slot: int, value: float | None, stopped: bool) -> None:
-        if value is None:
-            self.values.pop(slot, None)
-        else:
-            self.values[slot] = value
-        if stopped:
-            self.respecified.add(slot)
-
-    def due(self, slot: int) -> float | None:
-        """The value to reinstate, or None when absent or given again since the stop."""
-        if slot in self.respecified:
-            return None
-        return self.values.get(slot)
-
-
-def restat(run: Run, record: int) -> None:
+def restat(run: Post, record: int) -> None:
     """RESTAT, at the first motion after a stop: one block for the tool, one for the spindle
     (S with its direction M), then the feed/rapid gear and coolant codes, which wait for
     the motion block. Option 145 = -2 reinstates the rapid gear only (ENTRAP did it)."""

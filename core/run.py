@@ -8,7 +8,6 @@ supported" error naming the statement and its line; nothing is written then.
 from __future__ import annotations
 
 from collections.abc import Callable, Iterator
-from dataclasses import dataclass, field
 
 from gecent.core.cl.records import (
     Arelem,
@@ -46,6 +45,7 @@ from gecent.core.machine.selection import (
 from gecent.core.motion.circle import CircularMotion
 from gecent.core.motion.control_cycles import ControlCycles
 from gecent.core.motion.cycles import Cycle, cycle_legs
+from gecent.core.motion.guard import DEFAULT_MAX_SEGMENTS, CoordinateGuard, check_finite
 from gecent.core.motion.linear import LinearMotion, godlta_delta
 from gecent.core.motion.positioning import PositioningMotion
 from gecent.core.motion.rotary import RotaryElement
@@ -53,36 +53,35 @@ from gecent.core.motion.thread import ThreadElement
 from gecent.core.output.block import Block, Code
 from gecent.core.output.element import OutputElement
 from gecent.core.output.format import FormatOverflow
+from gecent.core.output.sinks import CollectSink, Ending, Sinks
 from gecent.core.plugins import PluginSet, get_plugins
 from gecent.core.reinstate import restat
 from gecent.core.spindle import SpindleElement
-from gecent.core.state import PostState
+from gecent.core.state import PostState, RunResult
 from gecent.core.statements import handlers
 from gecent.core.statements.threading import RAPID_THREAD
 from gecent.core.tool import ToolElement
 from gecent.core.units import UnitScale
 
 
-@dataclass
-class RunResult:
-    machine: MachineDefinition
-    blocks: list[Block] = field(default_factory=list)
-    diagnostics: list[Diagnostic] = field(default_factory=list)
-    partno: str = ""
-    records: int = 0
-    cut_minutes: float = 0.0
-    dwell_minutes: float = 0.0
-    # option 110 = +2 and a slide limit exceeded: "warn and continue with no punched output"
-    punch_suppressed: bool = False
-    dump: list[str] = field(default_factory=list)  # GEDUMP, after a fatal error
-
-
 class Run:
     """The state of one run and the record dispatch (spec 02 §7)."""
 
-    def __init__(self, machine: MachineDefinition, plugins: PluginSet | None = None) -> None:
+    def __init__(
+        self,
+        machine: MachineDefinition,
+        plugins: PluginSet | None = None,
+        sinks: Sinks | None = None,
+        report: Callable[[Diagnostic], None] | None = None,
+        max_segments: int = DEFAULT_MAX_SEGMENTS,
+    ) -> None:
         self.plugins = plugins
         self.result = RunResult(machine=machine)
+        if sinks is None:  # no outputs named: keep the blocks for the caller
+            collector = CollectSink(self.result.blocks)
+            sinks = Sinks([collector])
+        self.sinks = sinks
+        self.report = report
         self.state = PostState(machine)
         self.finished = False
         self._file = ""
@@ -101,6 +100,8 @@ class Run:
         self.cycle_first_z: float | None = None
         self._control_cycles: ControlCycles | None = None
         self.control_cycles: ControlCycles | None = None  # the control runs the cycle in force
+        self._guard: CoordinateGuard | None = None
+        self.state.max_segments = max_segments
         self._statements = handlers()
         self._statements["UNITS"] = lambda run, statement: run.units.set_units(statement)
 
@@ -112,6 +113,7 @@ class Run:
     def output(self) -> OutputElement:
         if self._output is None:
             self._output = OutputElement(self.state)
+            self._output.emit = self.sinks.emit
             if self.machine.number_option(1) != 0:
                 self._output.positioning_feed = self.feed_type
         return self._output
@@ -183,13 +185,35 @@ class Run:
         return self._thread
 
     @property
+    def rotary(self) -> RotaryElement:
+        if self._rotary is None:
+            self._rotary = RotaryElement(self.state, self.output.output, self.warn)
+        return self._rotary
+
+    def rebuild(self, machine: MachineDefinition) -> None:
+        """The elements precompute from the machine: made anew, keeping the times so far
+        (the sinks and what they wrote stay)."""
+        self.result.machine = self.state.machine = machine
+        previous = self._output
+        self._output = self._motion = self._circle = None
+        self._rapid_traverse = self._spindle = self._tool_element = self._rotary = None
+        self._guard = None
+        if previous is not None:
+            self.output.cut_minutes = previous.cut_minutes
+            self.output.dwell_minutes = previous.dwell_minutes
+
+    @property
     def tool(self) -> ToolElement:
         if self._tool_element is None:
             self._tool_element = ToolElement(self.state, self.output, self.warn)
         return self._tool_element
 
     def warn(self, diagnostic: Diagnostic) -> None:
-        self.result.diagnostics.append(diagnostic)
+        self.result.warnings += 1
+        if self.report is not None:
+            self.report(diagnostic)
+        else:
+            self.result.diagnostics.append(diagnostic)
         self.text_block(
             Block(
                 Code.COMMENT, diagnostic.where.record if diagnostic.where else None, diagnostic.text
@@ -198,11 +222,14 @@ class Run:
 
     def text_block(self, block: Block) -> None:
         """Text blocks bypass OUTPUT: they take no N and leave the pending S and M alone."""
-        self.output.emitted.append(block)
+        self.output.emit(block)
 
     def process(self, records: Iterator[Record]) -> RunResult:
+        """Run the records through and close the sinks: renamed into place when the run
+        finished, the listing alone (with the dump) after a fatal error, nothing after bad
+        input or any other failure."""
         try:
-            return self._process(records)
+            result = self._process(records)
         except FormatOverflow as overflow:
             if overflow.where is not None:  # the element knows the record, the run the file
                 overflow.where = SourcePosition(self._file, None, None, overflow.where.record)
@@ -213,13 +240,18 @@ class Run:
                 error.where = self._record.where
             self._stopped_by(error)
             raise
+        except BaseException:
+            self.sinks.close(Ending(False))
+            raise
+        self.sinks.close(Ending(True, punch_suppressed=result.punch_suppressed))
+        return result
 
     def _stopped_by(self, error: GecentError) -> None:
-        """A fatal error: what was output so far and the GEDUMP dump go with the error, so
-        the listing can still be written (never the tape)."""
-        self.result.blocks = self.output.emitted
+        """A fatal error: the sinks close with the GEDUMP dump, so the listing is still
+        written (never the tape); the dump also goes with the error."""
         self.result.dump = state_dump(str(error), self.state, self._record)
         error.partial = self.result
+        self.sinks.close(Ending(False, dump=self.result.dump))
 
     def _open_program(self) -> None:
         """Option 258: % opens the program, then the option-259 program number."""
@@ -246,6 +278,7 @@ class Run:
                 raise InputError("record after FINI", record.where)
             self.state.sequence = record.number
             record = self.units.record(record)
+            self._check_values(record)
             if self._circle is not None and self._circle.collecting:
                 if isinstance(record, Motion) and record.subtype is MotionSubtype.CONTINUATION:
                     self._circle.add(record)
@@ -281,14 +314,26 @@ class Run:
             self._circle.finish()
         if not self.finished:
             self.warn(Diagnostic("NO FINI STATEMENT AT THE END OF THE CL FILE"))
-        self.result.blocks = self.output.emitted
         self.result.cut_minutes = self.output.cut_minutes
         self.result.dwell_minutes = self.output.dwell_minutes
         if self.output.slide_limits.exceeded and self.machine.number_option(110) == 2:
             self.result.punch_suppressed = True
             self.warn(Diagnostic("SLIDE LIMITS EXCEEDED: NO PUNCHED OUTPUT (OPTION 110 = 2)"))
-            self.result.blocks = self.output.emitted
         return self.result
+
+    def _check_values(self, record: Record) -> None:
+        """Every number a record carries is finite; a motion's points are positions the
+        machine can take (core/motion/guard.py)."""
+        if isinstance(record, Motion):
+            if self._guard is None:
+                self._guard = CoordinateGuard(self.machine, self.output.words.shuffle)
+            position = self.state.position
+            self._guard.motion(record, position.previous_part, position.translation)
+        elif isinstance(record, Statement):
+            numbers = [a for a in record.args if isinstance(a, float)]
+            check_finite(tuple(numbers), record.where, record.major)
+        elif isinstance(record, Circle | Arelem):
+            check_finite(record.values, record.where, type(record).__name__.upper())
 
     def _collect_notes(self, record: Record) -> None:
         notes = self.output.diagnostics
@@ -430,12 +475,19 @@ def post(
     plugins: PluginSet,
     machine_override: str | MachineDefinition | None = None,
     watch: Callable[[Iterator[Record]], Iterator[Record]] | None = None,
+    sinks: Callable[[MachineDefinition], Sinks] | None = None,
+    report: Callable[[Diagnostic], None] | None = None,
+    max_segments: int = DEFAULT_MAX_SEGMENTS,
 ) -> RunResult:
     """Select the machine (first pass up to MACHIN, as GEINIT does), then process the file;
-    ``watch`` may wrap the records of the main pass (a progress bar)."""
+    ``watch`` may wrap the records of the main pass (a progress bar). ``sinks`` makes the
+    outputs for the machine chosen (none: the result keeps the blocks); ``report`` gets
+    each warning as it is made (none: the result keeps them)."""
     request, notes = first_machin(read_cl(path, plugins))
     machine = resolve_machine(plugins, machine_override, request)
-    run = Run(machine, plugins)
+    run = Run(
+        machine, plugins, sinks(machine) if sinks is not None else None, report, max_segments
+    )
     for note in notes:
         run.warn(note)
     records = read_cl(path, plugins)

@@ -34,12 +34,12 @@ from gecent.core.errors import (
 from gecent.core.families import HookPoint, MacfunHandler
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.machine.shuffle import decode_shuffle
+from gecent.core.motion.ladder import SpeedLadder
 from gecent.core.motion.linear import TWO_AXIS
 from gecent.core.motion.sfm import (
     ESTABLISHED,
     MAXIPM_EXCEEDED,
     RPM_ESTABLISHED,
-    SpeedLadder,
     piece_feed,
     plan,
     range_feed_limits,
@@ -48,7 +48,6 @@ from gecent.core.motion.sfm import (
 )
 from gecent.core.output.block import Block, Code
 from gecent.core.output.element import OutputElement
-from gecent.core.reinstate import SFM, SPINDLE_COMMAND, SPINDLE_M, SPINDLE_RANGE
 from gecent.core.spindle_types import (
     CCLW,
     CLW,
@@ -57,7 +56,7 @@ from gecent.core.spindle_types import (
     SpindleRequest,
     SpindleType,
 )
-from gecent.core.state import PostState
+from gecent.core.state import SFM, SPINDLE_COMMAND, SPINDLE_M, SPINDLE_RANGE, PostState
 
 TOO_FAST_FOR_THREADING = "SPINDLE SPEED IS TOO HIGH FOR THREADING"
 MACFUN_TYPE = 7  # option 19 = 7: the machine's MACFUN computes S (§4.5.8)

@@ -10,11 +10,39 @@ from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
 
 from gecent.core.absent import ABSENT, Absent
+from gecent.core.errors import Diagnostic
 from gecent.core.machine.definition import MachineDefinition
-from gecent.core.reinstate import StateVector
+from gecent.core.output.block import Block
 
 if TYPE_CHECKING:
-    from gecent.core.motion.sfm import SurfaceSpeedDriver
+    from gecent.core.motion.ladder import SurfaceSpeedDriver
+
+
+T_CODE, SPINDLE_COMMAND, SPINDLE_M, SPINDLE_RANGE, SFM, FEED_M, FEED_M2, COOLANT, COOLANT2 = range(
+    1, 10
+)
+
+
+@dataclass(slots=True)
+class StateVector:
+    """STATE(1..9): the last value of each condition; ``None`` for an absent or OFF one."""
+
+    values: dict[int, float] = field(default_factory=dict)
+    respecified: set[int] = field(default_factory=set)
+
+    def store(self, slot: int, value: float | None, stopped: bool) -> None:
+        if value is None:
+            self.values.pop(slot, None)
+        else:
+            self.values[slot] = value
+        if stopped:
+            self.respecified.add(slot)
+
+    def due(self, slot: int) -> float | None:
+        """The value to reinstate, or None when absent or given again since the stop."""
+        if slot in self.respecified:
+            return None
+        return self.values.get(slot)
 
 
 @dataclass(slots=True)
@@ -154,7 +182,26 @@ class PostState:
     conditions: StateVector = field(default_factory=StateVector)  # STATE(12), option 145
     sequence: int = 0  # SEQCTR: the CL record number of the record being processed
     skipping: bool = False  # SKPFLG (OPSKIP)
+    max_segments: int = 100_000  # gecent's bound on one CL move's blocks (0: none)
 
     def remember(self, slot: int, value: float | None) -> None:
         """Record a condition in STATE; while stopped it counts as given again."""
         self.conditions.store(slot, value, self.modes.stopped)
+
+
+@dataclass
+class RunResult:
+    """What a run leaves besides its outputs: ``blocks`` only when the run collects them
+    (no sinks given: scripts and tests), ``diagnostics`` only when no reporter is given."""
+
+    machine: MachineDefinition
+    blocks: list[Block] = field(default_factory=list)
+    diagnostics: list[Diagnostic] = field(default_factory=list)
+    warnings: int = 0
+    partno: str = ""
+    records: int = 0
+    cut_minutes: float = 0.0
+    dwell_minutes: float = 0.0
+    # option 110 = +2 and a slide limit exceeded: "warn and continue with no punched output"
+    punch_suppressed: bool = False
+    dump: list[str] = field(default_factory=list)  # GEDUMP, after a fatal error

@@ -29,8 +29,7 @@ from gecent.core.cl.records import Statement, Word
 from gecent.core.errors import Diagnostic, InputError, NotYetSupported, SourcePosition
 from gecent.core.output.block import Block, Code
 from gecent.core.output.element import OutputElement
-from gecent.core.reinstate import T_CODE
-from gecent.core.state import PostState
+from gecent.core.state import T_CODE, PostState
 
 TOOL_CHANGE, TURRET_INDEX, FRONT_TURRET, REAR_TURRET = 7, 8, 29, 30
 TURN_CLW, TURN_CCLW = 83, 84

@@ -99,7 +99,10 @@ def test_post_hello_writes_tape_and_listing(tmp_path: Path) -> None:
     assert (tape.read_bytes(), listing.read_bytes()) == first  # deterministic
 
 
-def test_post_machine_override_and_option_change(tmp_path: Path) -> None:
+def test_post_machine_override_and_option_change(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.chdir(tmp_path)
     source = tmp_path / "p.apt"
     source.write_text("PARTNO X\nMACHIN/GECENT,23,OPTAB,7,3\nFINI\n")
     code, _, err = run("post", str(source), "--machine", "4")
@@ -109,13 +112,17 @@ def test_post_machine_override_and_option_change(tmp_path: Path) -> None:
     assert "SAMPLE LATHE" in (tmp_path / "p.lis").read_text()
 
 
-def test_unsupported_statement_stops_without_output(tmp_path: Path) -> None:
+def test_unsupported_statement_stops_without_output(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.chdir(tmp_path)
     source = tmp_path / "u.apt"
     source.write_text("PARTNO X\nMACHIN/GECENT,23\nWELD/ON\nFINI\n")
     code, _, err = run("post", str(source))
     assert code == 3
     assert err.strip() == f"{source}:3 (record 3): error: not yet supported: WELD statement"
     assert not (tmp_path / "u.tape").exists() and not (tmp_path / "u.lis").exists()
+    assert [p.name for p in tmp_path.iterdir()] == ["u.apt"]  # no temporary left either
 
 
 def test_malformed_statement_is_exit_2_with_position(tmp_path: Path) -> None:

@@ -91,6 +91,7 @@ def _dwell_punch(seconds: float, optab: dict[int, float], regfor: float) -> str:
     text = '[machine]\nname = "dwell"\ntitle = "DWELL"\n[regfor]\n3 = ' + f"{regfor}\n"
     text += "[optab]\n" + "".join(f"{k} = {v}\n" for k, v in optab.items())
     element = OutputElement(PostState(load_machine_text(text, "dwell.toml")))
+    element.emit = [].append
     block = element.dwell(seconds)
     block.record = 7
     element.output(block)
@@ -118,6 +119,8 @@ def test_w14_sequence_numbers_wrap_at_seqlim() -> None:
     """W14 (001 L9117-9126): REGFOR(1) = 30 holds 999; N 1000 is 1000 mod 999 = 1."""
 
     element = OutputElement(PostState(standard_machine()))
+    emitted: list[Block] = []
+    element.emit = emitted.append
     for record in (999, 1000, 2000):
         element.output(Block(Code.AUX_ONLY, record))
-    assert [b.punch for b in element.emitted] == ["N999", "N001", "N002"]
+    assert [b.punch for b in emitted] == ["N999", "N001", "N002"]

@@ -14,8 +14,7 @@ from collections.abc import Callable
 
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.output.block import Block
-from gecent.core.reinstate import FEED_M
-from gecent.core.state import PostState
+from gecent.core.state import FEED_M, PostState
 
 ONE_SHOT, MODAL = 1, -1
 

@@ -17,6 +17,7 @@ from collections.abc import Callable
 
 from gecent.core.cl.records import Motion, MotionSubtype
 from gecent.core.errors import InputError
+from gecent.core.motion.guard import check_segments
 from gecent.core.motion.rounding import to_steps
 from gecent.core.motion.segments import segment_count, segments
 from gecent.core.motion.sfm import surface_cuts
@@ -110,6 +111,8 @@ class LinearMotion:
             else:
                 depmax = self.short_max
         count = segment_count(departures, [depmax] * self.axes)
+        if count > 1:
+            check_segments(count, self.state.max_segments, record.where, "move")
         reached = list(position.previous[:3])
         carry = [0] * self.axes
         surface = self.state.sfm.active and not self.state.feed.rapid_ipm

@@ -34,10 +34,9 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 from enum import IntEnum
 from math import inf, pi
-from typing import Protocol
 
-from gecent.core.errors import SourcePosition
 from gecent.core.machine.definition import MachineDefinition
+from gecent.core.motion.ladder import SpeedLadder
 from gecent.core.motion.rounding import to_steps
 from gecent.core.state import Feed
 
@@ -78,29 +77,6 @@ def step_fraction(option_15: float) -> float:
     0.10 = "10 percent"), a larger value a percent (type 18's "10.0 ... 10%")."""
     size = abs(option_15)
     return size if size < 1.0 else size / 100.0
-
-
-@dataclass(frozen=True, slots=True)
-class SpeedLadder:
-    """The speeds SFM may use in the locked range: the range's lowest and highest speed,
-    its ascending table of discrete speeds (None: a variable spindle, stepped by
-    ``step``, a fraction) and MAXRPM (SFMAXR, None when not given)."""
-
-    low: float
-    high: float
-    table: tuple[float, ...] | None = None
-    step: float = 0.1
-    maximum: float | None = None
-
-    @property
-    def top(self) -> float | None:
-        """The highest speed SFM may use (range and MAXRPM); None when MAXRPM is below
-        every speed of the range."""
-        if self.table is not None:
-            allowed = [s for s in self.table if self.maximum is None or s <= self.maximum]
-            return allowed[-1] if allowed else None
-        top = self.high if self.maximum is None else min(self.high, self.maximum)
-        return top if top >= self.low else None
 
 
 @dataclass(frozen=True, slots=True)
@@ -319,12 +295,3 @@ def piece_feed(machine: MachineDefinition, feed: Feed, speed: float) -> tuple[fl
     if feed.maximum_ipm is not None and used > feed.maximum_ipm:
         return feed.maximum_ipm, True
     return used, False
-
-
-class SurfaceSpeedDriver(Protocol):
-    """What SFMO needs from the spindle: the locked range's speeds, and a spindle turning
-    at a piece's speed (SPTYPE's S command riding in the piece's block, TSTSAF's feed)."""
-
-    def ladder(self) -> SpeedLadder: ...
-
-    def turn(self, speed: float, where: SourcePosition, record: int) -> None: ...

@@ -27,6 +27,7 @@ from math import sqrt
 from gecent.core.cl.records import Motion, MotionSubtype
 from gecent.core.errors import Diagnostic, InputError, SourcePosition
 from gecent.core.machine.shuffle import cell_map
+from gecent.core.motion.guard import check_segments
 from gecent.core.motion.linear import LinearMotion
 from gecent.core.motion.segments import segment_count, segments
 from gecent.core.output.block import Block, Code
@@ -215,6 +216,8 @@ class ThreadElement:
         if self.mark_100s and self.long_departure is not None:
             limits[axis] = round(19.9999 / self.step)  # the 100S's extended departure
         count = segment_count(departures, limits)
+        if count > 1:
+            check_segments(count, self.state.max_segments, record.where, "thread")
         reached = list(position.previous[:3])
         target = self.lead_registers[axis]
         assert target is not None

@@ -25,8 +25,7 @@ from gecent.core.output.block import Block, Code
 from gecent.core.output.marks import stand_in
 from gecent.core.output.modern import CL_PLANES, ModernControl, machine_planes
 from gecent.core.output.words import WordFormatter
-from gecent.core.reinstate import SPINDLE_COMMAND
-from gecent.core.state import PostState
+from gecent.core.state import SPINDLE_COMMAND, PostState
 
 CIRCLE_CODES = frozenset(
     {
@@ -86,7 +85,8 @@ class OutputElement:
         n_format = machine.registers.formats[1]
         # SEQLIM: the largest N the format holds (999 for format 30)
         self.sequence_limit = 10**n_format.left - 1 if n_format is not None else 1 << 62
-        self.emitted: list[Block] = []
+        # where finished blocks go (core/output/sinks.py); the run sets it
+        self.emit: Callable[[Block], None] = _nowhere
         self.diagnostics: list[Diagnostic] = []
         self._assumed_feed = False
         # a positioning machine's feed type (option 78), set by the run; CYCLE/MILL in force
@@ -194,7 +194,7 @@ class OutputElement:
         words = self.words.words(block, suppress=False, sequence=self.state.sequence)
         block.words = tuple((loc, printed) for loc, _, printed, _ in words if loc != 11)
         block.punch = self.tmark_code + "".join(letter + punched for _, letter, _, punched in words)
-        self.emitted.append(block)
+        self.emit(block)
 
     def dwell(self, seconds: float) -> Block:
         """A dwell block (CODE +4, manual §4.10, 001 L16296-16373): G = TABLEG(5) and the
@@ -355,7 +355,7 @@ class OutputElement:
         words = [g.letter + g.format(code).punched for code in codes]
         block = Block(Code.INSERT, record, " ".join(words))
         block.keep_blanks = bool(self.separator)
-        self.emitted.append(block)
+        self.emit(block)
 
     def finish_program(self, record: int | None) -> None:
         """Option 258 at FINI: the end-of-program code, unless END has given it since the
@@ -449,7 +449,7 @@ class OutputElement:
 
     def _emit(self, block: Block) -> None:
         if block.code is Code.FROM:  # printed in the absolute columns only, never punched
-            self.emitted.append(block)
+            self.emit(block)
             return
         modern = self.modern
         placed = False
@@ -483,7 +483,11 @@ class OutputElement:
         if block.punched:
             punch = self.separator.join(letter + punched for _, letter, _, punched in words)
             block.punch = "/" + punch if block.skipped else punch
-        self.emitted.append(block)
+        self.emit(block)
+
+
+def _nowhere(block: Block) -> None:
+    raise RuntimeError("the output element has no sinks")
 
 
 def _arc_length(block: Block, step: float) -> float:

@@ -4,17 +4,19 @@ one object per block, in output order, with what the tape and the listing say of
 from __future__ import annotations
 
 import json
-from collections.abc import Iterator
+from collections.abc import Iterable, Iterator
 
 from gecent.core.absent import ABSENT
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.output.block import Block
-from gecent.core.output.tape import tape_lines
+from gecent.core.output.tape import tape_line
 
 STEP_DIGITS = 6
 
 
-def block_record(block: Block, machine: MachineDefinition) -> dict[str, object]:
+def block_record(
+    block: Block, machine: MachineDefinition, line: str | None = None
+) -> dict[str, object]:
     """record (CL record number), code (CODE's name and number), text (comments, PPRINT),
     tape (the punched line, None when not punched), words (letter -> printed value),
     position (the machine point reached, in CL axis order and machine units), feed (the
@@ -29,7 +31,7 @@ def block_record(block: Block, machine: MachineDefinition) -> dict[str, object]:
         "code": block.code.name,
         "code_number": int(block.code),
         "text": block.text,
-        "tape": next(iter(tape_lines([block])), None),
+        "tape": line if line is not None else tape_line(block),
         "words": {letters[location]: printed.strip() for location, printed in block.words},
         "position": (
             None
@@ -44,6 +46,6 @@ def block_record(block: Block, machine: MachineDefinition) -> dict[str, object]:
     }
 
 
-def json_lines(blocks: list[Block], machine: MachineDefinition) -> Iterator[str]:
+def json_lines(blocks: Iterable[Block], machine: MachineDefinition) -> Iterator[str]:
     for block in blocks:
         yield json.dumps(block_record(block, machine), separators=(",", ":"))

@@ -133,3 +133,10 @@ class ModernControl:
     def forget(self) -> None:
         """After a tool change the next move states every axis."""
         self.at = None
+
+
+def modern_output(machine: MachineDefinition) -> bool:
+    """The tape is a program for a modern control (decimal-point words, option 255, or the
+    %/start/end program frame, option 258): such a machine's listing is written only when
+    asked for (docs/decisions.md)."""
+    return machine.number_option(255) == 1 or machine.number_option(258) == 1

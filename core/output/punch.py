@@ -26,39 +26,59 @@ def table(code: str) -> dict[str, int]:
     return {str(k): int(v) for k, v in tomllib.loads(raw.decode("utf-8"))[code].items()}
 
 
-def punch(lines: Iterable[str], code: str, leader: str = "(", tmark: str = "=") -> bytes:
-    """The frames of a tape image; a character the code cannot punch is an error naming it.
+class Puncher:
+    """Tape image lines to frames, one line at a time, by table translation.
 
     Two stand-ins of the machine's options 64 and 65 are punched as control codes: a line
     made only of the leader stand-in is leader (no end of block), and the TMARK stand-in at
     the start of a line is the end-of-record (rewind stop) code. An empty line is a blank
     card: 72 frames of blank tape (feed holes only), the option-11 filler after END."""
-    if code not in CODES:
-        raise InputError(f"unknown tape code {code!r} (eia or ascii)")
-    codes = table(code)
-    end_of_block = codes["EOB"]
-    frames = bytearray()
-    for number, line in enumerate(lines, start=1):
+
+    def __init__(self, code: str, leader: str = "(", tmark: str = "=") -> None:
+        if code not in CODES:
+            raise InputError(f"unknown tape code {code!r} (eia or ascii)")
+        codes = table(code)
+        self.code = code
+        self.leader = leader
+        self.tmark = tmark
+        self.end_of_block = bytes([codes["EOB"]])
+        self.blank_card = bytes([codes["BLANK_TAPE"]]) * CARD_FRAMES
+        self.leader_frame = bytes([codes["LEADER"]])
+        self.rewind_stop = bytes([codes["REWIND_STOP"]])
+        characters = {k: v for k, v in codes.items() if len(k) == 1 and ord(k) < 256}
+        frames = bytearray(range(256))
+        for character, frame in characters.items():
+            frames[ord(character)] = frame
+        self.frames = bytes(frames)
+        # deleting every punchable character leaves exactly the ones that have no code
+        self.unpunchable = str.maketrans("", "", "".join(characters) + NOT_PUNCHED)
+        self.lines = 0
+
+    def frames_of(self, line: str) -> bytes:
+        self.lines += 1
         if not line:
-            frames.extend(bytes([codes["BLANK_TAPE"]]) * CARD_FRAMES)
-            continue
-        if line.strip(leader) == "":
-            frames.extend(bytes([codes["LEADER"]]) * len(line))
-            continue
-        if line.startswith(tmark):
-            frames.append(codes["REWIND_STOP"])
+            return self.blank_card
+        if line.strip(self.leader) == "":
+            return self.leader_frame * len(line)
+        prefix = b""
+        if line.startswith(self.tmark):
+            prefix = self.rewind_stop
             line = line[1:]
-        for character in line:
-            if character in NOT_PUNCHED:
-                continue
-            frame = codes.get(character)
-            if frame is None:
-                raise InputError(
-                    f"tape block {number} ({line!r}): {character!r} has no {code.upper()} code"
-                )
-            frames.append(frame)
-        frames.append(end_of_block)
-    return bytes(frames)
+        missing = line.translate(self.unpunchable)
+        if missing:
+            raise InputError(
+                f"tape block {self.lines} ({line!r}): {missing[0]!r} has no "
+                f"{self.code.upper()} code"
+            )
+        body = line.encode("latin-1").translate(self.frames, NOT_PUNCHED.encode("ascii"))
+        return prefix + body + self.end_of_block
+
+
+def punch(lines: Iterable[str], code: str, leader: str = "(", tmark: str = "=") -> bytes:
+    """The frames of a tape image; a character the code cannot punch is an error naming it
+    (see :class:`Puncher`)."""
+    puncher = Puncher(code, leader, tmark)
+    return b"".join(puncher.frames_of(line) for line in lines)
 
 
 def unpunch(frames: bytes, code: str, leader: str = "(", tmark: str = "=") -> list[str]:

@@ -11,9 +11,9 @@ from typing import TYPE_CHECKING
 from gecent.core.cl.records import Statement
 
 if TYPE_CHECKING:
-    from gecent.core.run import Run
+    from gecent.core.dispatch.context import Post
 
-Handler = Callable[["Run", Statement], None]
+Handler = Callable[["Post", Statement], None]
 
 
 def handlers() -> dict[str, Handler]:

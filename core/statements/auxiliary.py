@@ -16,11 +16,11 @@ from gecent.core.cl.records import Statement
 from gecent.core.errors import InputError
 from gecent.core.output.block import Block, Code
 from gecent.core.output.marks import leader_block, stand_in
-from gecent.core.reinstate import COOLANT, StateVector
 from gecent.core.spindle import leave_sfm
+from gecent.core.state import COOLANT, StateVector
 
 if TYPE_CHECKING:
-    from gecent.core.run import Run
+    from gecent.core.dispatch.context import Post
 
 # coolant mode (ICLMOD) -> TABLEM cells (on, off) (001 L23095-23117, L23478-23535)
 COOLANT_CELLS = {1: (101, 104), 2: (102, 105), 3: (103, 106), 4: (9, 10), 5: (19, 20),
@@ -33,7 +33,7 @@ CLAMP_CELLS = {"XAXIS": (22, 23), "TABLE": (22, 23), "PART": (22, 23), "YAXIS": 
 FILLER_FRAMES = 72  # one card of the tape image
 
 
-def coolnt(run: Run, statement: Statement) -> None:
+def coolnt(run: Post, statement: Statement) -> None:
     """COOLNT/ON|OFF[,FLOOD|MIST|TAPKUL|SADDLE|FRONT|REAR]: the M code waits for the next
     block. A mode the machine has no code for falls back to TABLEM(9)/(10)."""
     words = statement.words()
@@ -58,7 +58,7 @@ def coolnt(run: Run, statement: Statement) -> None:
         run.output.store_m(code)
 
 
-def _stop(run: Run, statement: Statement, cell: int) -> None:
+def _stop(run: Post, statement: Statement, cell: int) -> None:
     """STOP (TABLEM(1)) and OPSTOP (TABLEM(2)): the code in a block by itself; the control
     stops spindle and coolant, so both are off afterwards (001 L37970-37991)."""
     if statement.args:
@@ -71,15 +71,15 @@ def _stop(run: Run, statement: Statement, cell: int) -> None:
         run.rapid.entrap()  # ENTRAP: the machine waits in rapid gear (001 L30953-30990)
 
 
-def stop(run: Run, statement: Statement) -> None:
+def stop(run: Post, statement: Statement) -> None:
     _stop(run, statement, 1)
 
 
-def opstop(run: Run, statement: Statement) -> None:
+def opstop(run: Post, statement: Statement) -> None:
     _stop(run, statement, 2)
 
 
-def break_(run: Run, statement: Statement) -> None:
+def break_(run: Post, statement: Statement) -> None:
     """BREAK: an optional-stop block when the machine has one (TABLEM(2); the manual's
     TABLEG(2) is a slip), then the tape may be broken there (001 L9273-9281)."""
     if run.machine.m_code(2) is None:
@@ -88,7 +88,7 @@ def break_(run: Run, statement: Statement) -> None:
 
 
 def code_by_itself(
-    run: Run, statement: Statement, cell: int, kind: Code = Code.AUX_ONLY, stop: bool = False
+    run: Post, statement: Statement, cell: int, kind: Code = Code.AUX_ONLY, stop: bool = False
 ) -> bool:
     """TABLEM(cell) in a block by itself, after any waiting M; comment 22 (and False) when
     the machine has no such code."""
@@ -100,7 +100,7 @@ def code_by_itself(
     return True
 
 
-def _spindle_and_coolant_off(run: Run) -> None:
+def _spindle_and_coolant_off(run: Post) -> None:
     state = run.state
     state.spindle.on = False
     state.modes.coolant_on = False
@@ -108,7 +108,7 @@ def _spindle_and_coolant_off(run: Run) -> None:
         state.spindle.range = 1
 
 
-def _dwell_with_t0(run: Run, statement: Statement) -> None:
+def _dwell_with_t0(run: Post, statement: Statement) -> None:
     """Option 97: a dwell "in a block with a zero T code" before END and REWIND
     (001 L25570-25584)."""
     seconds = run.machine.number_option(97)
@@ -119,7 +119,7 @@ def _dwell_with_t0(run: Run, statement: Statement) -> None:
         run.output.output(block)
 
 
-def end(run: Run, statement: Statement) -> None:
+def end(run: Post, statement: Statement) -> None:
     """END: the end-of-program code (TABLEM(3)) in a CODE +5 block by itself, then the
     option-168 leader and the option-11 filler card; the run's modes are reset and the
     next motion must start with a FROM (001 L30909-30951, L26320-26327, L24496-24510)."""
@@ -140,7 +140,7 @@ def end(run: Run, statement: Statement) -> None:
     _reset(run)
 
 
-def reset(run: Run, statement: Statement) -> None:
+def reset(run: Post, statement: Statement) -> None:
     """RESET, END's second entry: the same resets without the end code, as a CODE -5
     block that is neither printed nor punched (001 L30909-30951)."""
     if statement.args:
@@ -150,7 +150,7 @@ def reset(run: Run, statement: Statement) -> None:
     _reset(run)
 
 
-def _reset(run: Run) -> None:
+def _reset(run: Post) -> None:
     """ENDGB's resets: spindle, stop, rapid, TRANS and the STATE vector; a FROM must
     follow (comment 47 otherwise)."""
     state = run.state
@@ -165,7 +165,7 @@ def _reset(run: Run) -> None:
     state.conditions = StateVector()
 
 
-def air(run: Run, statement: Statement) -> None:
+def air(run: Post, statement: Statement) -> None:
     """AIR/ON|OFF: TABLEM(123) or (124) in a block by itself (001 L28677-28716)."""
     words = list(statement.words())
     if len(statement.args) != 1 or words not in (["ON"], ["OFF"]):
@@ -174,7 +174,7 @@ def air(run: Run, statement: Statement) -> None:
     code_by_itself(run, statement, 123 if words[0] == "ON" else 124)
 
 
-def rewind(run: Run, statement: Statement) -> None:
+def rewind(run: Post, statement: Statement) -> None:
     """REWIND: the option-97 dwell with T0, then the rewind code TABLEM(31) in a block by
     itself; spindle and coolant are off (001 L35796-35848; DWELL(92) read as DWELL(97))."""
     run.output.flush_m(statement.number)
@@ -183,7 +183,7 @@ def rewind(run: Run, statement: Statement) -> None:
         _spindle_and_coolant_off(run)
 
 
-def auxfun(run: Run, statement: Statement) -> None:
+def auxfun(run: Post, statement: Statement) -> None:
     """AUXFUN/n: M n itself (not a TABLEM cell), in a block by itself under option 75 = 0,
     else waiting for the next block (001 L28825-28870)."""
     code = _whole_number(statement, "AUXFUN")
@@ -194,14 +194,14 @@ def auxfun(run: Run, statement: Statement) -> None:
         output.output(Block(Code.AUX_ONLY, statement.number))
 
 
-def prefun(run: Run, statement: Statement) -> None:
+def prefun(run: Post, statement: Statement) -> None:
     """PREFUN/n: G n in a block by itself, never suppressed (CODE -4, 001 L9241-9250)."""
     block = Block(Code.G_ONLY, statement.number)
     block.cells[2] = _whole_number(statement, "PREFUN")
     run.output.output(block)
 
 
-def clamp(run: Run, statement: Statement) -> None:
+def clamp(run: Post, statement: Statement) -> None:
     """CLAMP/[object,]ON|OFF: the clamp M code waits for the next block; with option 76 a
     dwell block carries it (001 L29337-29394, L25290-25295)."""
     words = statement.words()

@@ -10,10 +10,10 @@ from gecent.core.errors import InputError
 from gecent.core.output.block import Block, Code
 
 if TYPE_CHECKING:
-    from gecent.core.run import Run
+    from gecent.core.dispatch.context import Post
 
 
-def seqno(run: Run, statement: Statement) -> None:
+def seqno(run: Post, statement: Statement) -> None:
     """SEQNO/n[,INCR,k]: the blocks that follow are numbered n, n + k, ...; SEQNO/OFF drops
     the N word; SEQNO/ON numbers by option 143 again, or resumes a series."""
     numbering = run.state.numbering
@@ -31,7 +31,7 @@ def seqno(run: Run, statement: Statement) -> None:
     numbering.off = False
 
 
-def trans(run: Run, statement: Statement) -> None:
+def trans(run: Post, statement: Statement) -> None:
     """TRANS/x,y,z: replaces the translation added to every later CL point (L38816-38819);
     an incremental machine's next departure carries the change."""
     numbers = statement.numbers()
@@ -41,7 +41,7 @@ def trans(run: Run, statement: Statement) -> None:
     run.state.position.translation = (x, y, z)
 
 
-def origin(run: Run, statement: Statement) -> None:
+def origin(run: Post, statement: Statement) -> None:
     """ORIGIN/x,y,z: for the operator printout only, carried by an information block
     (CODE -9, never printed or punched): OPR = absolute - origin."""
     numbers = statement.numbers()

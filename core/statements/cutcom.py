@@ -14,14 +14,14 @@ from gecent.core.errors import Diagnostic, InputError
 from gecent.core.output.block import Block, Code
 
 if TYPE_CHECKING:
-    from gecent.core.run import Run
+    from gecent.core.dispatch.context import Post
 
 CUTCOM_CELLS = {"OFF": 40, "LEFT": 41, "RIGHT": 42, "PLUS": 46, "MINUS": 47}
 # comment 22's wording (001 L29355-29358), for a G code: the manual has no comment of its own
 G_NOT_AVAILABLE = "REQUESTED PREPARATORY FUNCTION CODE IS NOT AVAILABLE ON THIS MACHINE"
 
 
-def cutcom(run: Run, statement: Statement) -> None:
+def cutcom(run: Post, statement: Statement) -> None:
     """CUTCOM/LEFT|RIGHT|OFF|PLUS|MINUS: TABLEG(40, 41, 42, 46, 47) in a G-only block; a
     code the machine lacks is reported and nothing is output."""
     words = statement.words()

@@ -19,10 +19,10 @@ from gecent.core.statements.feed import program_feed
 CONTROL_CYCLE_KEEPS = "CYCLE {} NOT OUTPUT: THE CONTROL'S OWN CYCLE DOES IT"
 
 if TYPE_CHECKING:
-    from gecent.core.run import Run
+    from gecent.core.dispatch.context import Post
 
 
-def cycle(run: Run, statement: Statement) -> None:
+def cycle(run: Post, statement: Statement) -> None:
     parsed = parse_cycle(statement, run.warn)
     feed = run.state.feed
     if feed.rapid_mode:

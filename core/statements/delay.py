@@ -16,14 +16,14 @@ from gecent.core.errors import Diagnostic, InputError
 from gecent.core.output.block import Block, Code
 
 if TYPE_CHECKING:
-    from gecent.core.run import Run
+    from gecent.core.dispatch.context import Post
 
 NO_SPEED = "DELAY TIME FOR REV NOT CORRECT SINCE NO SPEED IS GIVEN."
 NO_PRESET = "REQUESTED MISCELLANEOUS FUNCTION CODE IS NOT AVAILABLE ON THIS MACHINE"
 NO_SKIP = "OPSKIP NOT AVAILABLE ON THIS MACHINE (OPTION 30 = 0); STATEMENT IGNORED"
 
 
-def delay(run: Run, statement: Statement) -> None:
+def delay(run: Post, statement: Statement) -> None:
     words = statement.words()
     numbers = statement.numbers()
     if len(numbers) != 1 or any(w != "REV" for w in words) or len(words) > 1:
@@ -55,7 +55,7 @@ def delay(run: Run, statement: Statement) -> None:
     output.output(block)
 
 
-def opskip(run: Run, statement: Statement) -> None:
+def opskip(run: Post, statement: Statement) -> None:
     words = statement.words()
     if words not in (("ON",), ("OFF",)) or len(statement.args) != 1:
         raise InputError("OPSKIP expects ON or OFF", statement.where)

@@ -11,8 +11,8 @@ from gecent.core.errors import Diagnostic, InputError, NotYetSupported
 from gecent.core.feed.positioning import FeedContext
 from gecent.core.feed.rapid import feed_range_cell
 from gecent.core.motion.sfm import range_feed_limits
-from gecent.core.reinstate import FEED_M
 from gecent.core.spindle import assumed_speed, leave_sfm
+from gecent.core.state import FEED_M
 
 _FEED_UNITS = ("IPM", "MMPM", "IPR", "MMPR")
 # FEDRAT/...,RANGE,LOW|MEDIUM|HIGH: the manual scans for the three words, then for a number
@@ -21,7 +21,7 @@ RANGE_ASSUMED = "OPTION FEED RATE RANGE ASSUMED."  # 001 L31199-31200
 RANGE_NOT_AVAILABLE = "RANGE REQUESTED IS NOT AVAILABLE, USE HIGHEST"  # SPINDL's, 001 L37617
 
 if TYPE_CHECKING:
-    from gecent.core.run import Run
+    from gecent.core.dispatch.context import Post
 
 
 @dataclass(slots=True)
@@ -35,7 +35,7 @@ class FedratRequest:
     maximum: float | None = None
 
 
-def fedrat(run: Run, statement: Statement) -> None:
+def fedrat(run: Post, statement: Statement) -> None:
     """FEDRAT/f[,IPM|IPR][,RANGE,LOW|MEDIUM|HIGH|n][,MAXIPM,v] or FEDRAT/IPM,f
     (001 L31113-31212), in the manual's order: the feed in machine units per minute (per
     revolution: times the spindle speed); option 109's rapid test; the range change
@@ -125,7 +125,7 @@ def _range_number(item: Arg, statement: Statement) -> int:
     return int(number)
 
 
-def _select_range(run: Run, requested: int | None, statement: Statement) -> None:
+def _select_range(run: Post, requested: int | None, statement: Statement) -> None:
     """Step 7 (001 L31170-31185), only on a machine with several feed ranges (option 18 > 1):
     a range different from the present one STOREs its M code TABLEM(112 + r), records it in
     STATE(6) for reinstatement (negative while stopped) and makes the option-93 dwell;
@@ -166,23 +166,23 @@ def _select_range(run: Run, requested: int | None, statement: Statement) -> None
         output.output(block)
 
 
-def feed_limits(run: Run) -> tuple[float, float]:
+def feed_limits(run: Post) -> tuple[float, float]:
     """FRMIN, FRMAX (step 8) of the present feed range; SFM's TSTSAF reads the same."""
     return range_feed_limits(run.machine, run.state.feed.range)
 
 
-def program_feed(run: Run, value: float, unit: Word | None, statement: Statement) -> None:
+def program_feed(run: Post, value: float, unit: Word | None, statement: Statement) -> None:
     """A programmed feed in machine units (a cycle's): per minute or per revolution as its
     unit word says, or in the last mode without one."""
     _hold_feed(run, _mode_ipm(run, value, unit, statement), statement)
 
 
-def feed_per_revolution(run: Run, statement: Statement) -> None:
+def feed_per_revolution(run: Post, statement: Statement) -> None:
     """FEDIPM = FEDIPR x the spindle speed, again at every speed change."""
     _hold_feed(run, _revolution_ipm(run, statement), statement)
 
 
-def _mode_ipm(run: Run, value: float, unit: Word | None, statement: Statement) -> float:
+def _mode_ipm(run: Post, value: float, unit: Word | None, statement: Statement) -> float:
     feed = run.state.feed
     if unit is not None:
         feed.per_revolution = unit.name in ("IPR", "MMPR")
@@ -192,7 +192,7 @@ def _mode_ipm(run: Run, value: float, unit: Word | None, statement: Statement) -
     return _revolution_ipm(run, statement)
 
 
-def _revolution_ipm(run: Run, statement: Statement) -> float:
+def _revolution_ipm(run: Post, statement: Statement) -> float:
     speed = run.state.spindle.speed
     if speed is None:
         run.warn(Diagnostic("NO SPINDLE SPEED GIVEN FOR IPR MODE.", statement.where))
@@ -200,7 +200,7 @@ def _revolution_ipm(run: Run, statement: Statement) -> float:
     return run.state.feed.per_revolution_value * speed
 
 
-def _hold_feed(run: Run, feed: float, statement: Statement, *, report: bool = True) -> None:
+def _hold_feed(run: Post, feed: float, statement: Statement, *, report: bool = True) -> None:
     """TSTEXT: FEDIPM within FRMIN..FRMAX, with a comment when it was not (none for a feed
     that option 109 turned into a rapid request)."""
     low, high = feed_limits(run)
@@ -220,7 +220,7 @@ def _hold_feed(run: Run, feed: float, statement: Statement, *, report: bool = Tr
     run.state.feed.programmed = feed
 
 
-def _positioning_snap(run: Run, feed: float, statement: Statement) -> float:
+def _positioning_snap(run: Post, feed: float, statement: Statement) -> float:
     """K = 0 of the positioning feed type (FTYPEn from FEDRAT, 001 L11316-11322): the feed
     the machine can make becomes FEDIPM, so the listing prints the true value used."""
     state = run.state
@@ -233,7 +233,7 @@ def _positioning_snap(run: Run, feed: float, statement: Statement) -> float:
     return snap.ipm
 
 
-def rapid(run: Run, statement: Statement) -> None:
+def rapid(run: Post, statement: Statement) -> None:
     """RAPID: the next motion record goes at rapid traverse (option 109)."""
     if statement.args:
         raise NotYetSupported(f"RAPID/{statement.args[0]}", statement.where)

@@ -10,10 +10,10 @@ from gecent.core.errors import Diagnostic
 from gecent.core.machine.selection import apply_machin_options, parse_machin
 
 if TYPE_CHECKING:
-    from gecent.core.run import Run
+    from gecent.core.dispatch.context import Post
 
 
-def machin(run: Run, statement: Statement) -> None:
+def machin(run: Post, statement: Statement) -> None:
     request = parse_machin(statement)
     if request is None:
         return  # another postprocessor's MACHIN: reported when the machine was chosen
@@ -26,13 +26,7 @@ def machin(run: Run, statement: Statement) -> None:
         )
     changed, notes = apply_machin_options(run.machine, request)
     if changed is not run.machine:
-        # the elements precompute from the machine: rebuild them, keeping what is output
-        run.result.machine = run.state.machine = changed
-        previous, run._output, run._motion, run._circle = run._output, None, None, None
-        run._rapid_traverse = run._spindle = run._tool_element = run._rotary = None
-        if previous is not None:
-            run.output.emitted.extend(previous.emitted)
-            run.output.cut_minutes = previous.cut_minutes
+        run.rebuild(changed)
     for note in notes:
         run.warn(note)
 

@@ -14,7 +14,7 @@ from gecent.core.errors import InputError, NotYetSupported
 from gecent.core.statements.auxiliary import code_by_itself
 
 if TYPE_CHECKING:
-    from gecent.core.run import Run
+    from gecent.core.dispatch.context import Post
 
 # FEDOVR's own text: "If ON is given, TABLEM(112) is output. If OFF is given, TABLEM(111)"
 # (001 L31094-31096), though the TABLEM chart names 111 "on" and 112 "off" (L23537-23539):
@@ -24,7 +24,7 @@ PALLET_CELL = 13  # "Pallet select change" (001 L23103)
 READER_CELL = 14  # "Switch reader" (001 L23105)
 
 
-def select(run: Run, statement: Statement) -> None:
+def select(run: Post, statement: Statement) -> None:
     args = statement.args
     if not args or not isinstance(args[0], Word):
         raise InputError(
@@ -37,7 +37,7 @@ def select(run: Run, statement: Statement) -> None:
     handler(run, statement)
 
 
-def _feed_override(run: Run, statement: Statement) -> None:
+def _feed_override(run: Post, statement: Statement) -> None:
     """SELECT/FEDOVR,ON|OFF (FEDOVR)."""
     rest = statement.args[1:]
     if len(rest) != 1 or not isinstance(rest[0], Word) or rest[0].name not in ("ON", "OFF"):
@@ -45,11 +45,11 @@ def _feed_override(run: Run, statement: Statement) -> None:
     code_by_itself(run, statement, FEED_OVERRIDE_CELLS[rest[0].name])
 
 
-def _numbered(cell: int, minor: str) -> Callable[[Run, Statement], None]:
+def _numbered(cell: int, minor: str) -> Callable[[Post, Statement], None]:
     """SELECT/PALLET[,n] and SELECT/READER[,n]: the machine has one code for each
     (TABLEM 13, 14), so n names the pallet or reader for the programmer, not the tape."""
 
-    def handler(run: Run, statement: Statement) -> None:
+    def handler(run: Post, statement: Statement) -> None:
         rest = statement.args[1:]
         if len(rest) > 1 or any(isinstance(a, Word) or a < 1 or a != int(a) for a in rest):
             raise InputError(f"SELECT/{minor} expects a {minor.lower()} number", statement.where)
@@ -58,7 +58,7 @@ def _numbered(cell: int, minor: str) -> Callable[[Run, Statement], None]:
     return handler
 
 
-_MINORS: dict[str, Callable[[Run, Statement], None]] = {
+_MINORS: dict[str, Callable[[Post, Statement], None]] = {
     "FEDOVR": _feed_override,
     "PALLET": _numbered(PALLET_CELL, "PALLET"),
     "READER": _numbered(READER_CELL, "READER"),

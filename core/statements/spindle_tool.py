@@ -7,35 +7,32 @@ from typing import TYPE_CHECKING
 
 from gecent.core.cl.records import Statement
 from gecent.core.errors import NotYetSupported
-from gecent.core.motion.rotary import RotaryElement
 from gecent.core.statements.feed import feed_per_revolution
 
 if TYPE_CHECKING:
-    from gecent.core.run import Run
+    from gecent.core.dispatch.context import Post
 
 
-def spindl(run: Run, statement: Statement) -> None:
+def spindl(run: Post, statement: Statement) -> None:
     run.spindle.statement(statement)
     if run.state.feed.per_revolution:
         feed_per_revolution(run, statement)
 
 
-def tool(run: Run, statement: Statement) -> None:
+def tool(run: Post, statement: Statement) -> None:
     run.tool.statement(statement)
 
 
-def turret(run: Run, statement: Statement) -> None:
+def turret(run: Post, statement: Statement) -> None:
     run.tool.turret(statement)
 
 
-def rotate(run: Run, statement: Statement) -> None:
+def rotate(run: Post, statement: Statement) -> None:
     """ROTATE/TABLE|HEAD: an incremental rotary system on a contouring machine (ROTABI);
     absolute systems belong to positioning machines (ROTABA)."""
     if run.machine.number_option(1) != 0:
         raise NotYetSupported("ROTATE on a positioning machine (ROTABA)", statement.where)
-    if run._rotary is None:
-        run._rotary = RotaryElement(run.state, run.output.output, run.warn)
-    run._rotary.statement(statement)
+    run.rotary.statement(statement)
 
 
 HANDLERS = {

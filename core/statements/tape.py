@@ -10,10 +10,10 @@ from gecent.core.output.block import Block, Code
 from gecent.core.output.marks import leader_block, tmark_cells
 
 if TYPE_CHECKING:
-    from gecent.core.run import Run
+    from gecent.core.dispatch.context import Post
 
 
-def leader(run: Run, statement: Statement) -> None:
+def leader(run: Post, statement: Statement) -> None:
     """LEADER/L: L inches of leader, in whole cards (CODE -8, 001 L9306-9324)."""
     numbers = statement.numbers()
     if len(numbers) != 1 or len(statement.args) != 1:
@@ -22,7 +22,7 @@ def leader(run: Run, statement: Statement) -> None:
     run.text_block(leader_block(run.machine, numbers[0], statement.number, statement.where))
 
 
-def tmark(run: Run, statement: Statement) -> None:
+def tmark(run: Post, statement: Statement) -> None:
     """TMARK: the end-of-record (rewind stop) code in a block of its own (CODE +8)."""
     if statement.args:
         raise NotYetSupported(f"TMARK/{statement.args[0]}", statement.where)

@@ -10,21 +10,21 @@ from gecent.core.cl.records import Statement
 from gecent.core.output.block import Block, Code
 
 if TYPE_CHECKING:
-    from gecent.core.run import Run
+    from gecent.core.dispatch.context import Post
 
 
-def partno(run: Run, statement: Statement) -> None:
+def partno(run: Post, statement: Statement) -> None:
     text = statement.text or ""
     if not run.result.partno:
-        run.result.partno = text
+        run.result.partno = run.sinks.partno = text
     run.text_block(_comment(run, Code.PARTNO, statement.number, text))
 
 
-def pprint(run: Run, statement: Statement) -> None:
+def pprint(run: Post, statement: Statement) -> None:
     run.text_block(_comment(run, Code.PPRINT, statement.number, statement.text or ""))
 
 
-def _comment(run: Run, code: Code, number: int, text: str) -> Block:
+def _comment(run: Post, code: Code, number: int, text: str) -> Block:
     """The text block, or under option 257 = 1 a punched comment: "(TEXT)", a parenthesis
     inside the text turned into a bracket, since controls end a comment at the first ")"."""
     if run.machine.number_option(257) != 1:
@@ -38,7 +38,7 @@ def _comment(run: Run, code: Code, number: int, text: str) -> Block:
 _BRACKETS = str.maketrans("()", "[]")
 
 
-def insert(run: Run, statement: Statement) -> None:
+def insert(run: Post, statement: Statement) -> None:
     run.text_block(Block(Code.INSERT, statement.number, statement.text or ""))
 
 

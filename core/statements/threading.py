@@ -20,14 +20,14 @@ from gecent.core.errors import Diagnostic, InputError
 from gecent.core.output.block import Block, Code
 
 if TYPE_CHECKING:
-    from gecent.core.run import Run
+    from gecent.core.dispatch.context import Post
 
 ENCODER_ON, ENCODER_OFF = 51, 52
 NO_ENCODER = "COUPLE IS NOT AVAILABLE ON THIS MACHINE; STATEMENT DISREGARDED"
 RAPID_THREAD = "RAPID AND THREAD CANNOT BE USED TOGETHER; THE THREAD IS CUT AT ITS LEAD"
 
 
-def pitch(run: Run, statement: Statement) -> None:
+def pitch(run: Post, statement: Statement) -> None:
     threading = run.state.threading
     args = statement.args
     where = statement.where
@@ -62,7 +62,7 @@ def pitch(run: Run, statement: Statement) -> None:
     threading.length = run.units.length(numbers[2]) if len(numbers) == 3 else None
 
 
-def thread(run: Run, statement: Statement) -> None:
+def thread(run: Post, statement: Statement) -> None:
     words = [a.name for a in statement.args if isinstance(a, Word)]
     if words not in (["TURN"], ["FACE"]) or len(statement.args) != 1:
         raise InputError("THREAD expects THREAD/TURN or THREAD/FACE", statement.where)
@@ -71,7 +71,7 @@ def thread(run: Run, statement: Statement) -> None:
     threading.facing = words[0] == "FACE"
 
 
-def couple(run: Run, statement: Statement) -> None:
+def couple(run: Post, statement: Statement) -> None:
     words = [a.name for a in statement.args if isinstance(a, Word)]
     if words not in (["ON"], ["OFF"]) or len(statement.args) != 1:
         raise InputError("COUPLE expects COUPLE/ON or COUPLE/OFF", statement.where)
@@ -102,7 +102,7 @@ def couple(run: Run, statement: Statement) -> None:
         run.spindle.change_speed(restore, statement.where, statement.number, spindle.range)
 
 
-def _lowest_in_range(run: Run) -> float | None:
+def _lowest_in_range(run: Post) -> float | None:
     """The lowest speed of the range the spindle turns in, as its spindle type says (types
     13, 15, 17 and 18 keep more than speeds in SRTAB)."""
     spindle_type = run.spindle.spindle_type

@@ -8,6 +8,7 @@ times at the bottom of every page and the tape length on the last one. Pages hol
 
 from __future__ import annotations
 
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 from math import ceil
 
@@ -21,8 +22,9 @@ from gecent.core.output.block import TEXT_CODES, Block, Code
 from gecent.core.output.element import MOTION_CODES, POSITION_CODES, THREAD_CODES
 from gecent.core.output.format import NO_DECIMAL_POINT
 from gecent.core.output.marks import stand_in
-from gecent.core.output.tape import tape_feet, tape_lines
+from gecent.core.output.tape import frames_to_feet, line_frames, tape_line
 
+PAGE_TEMPLATE = "geout1_page.j2"
 ABSOLUTE_AXES = ((3, "X"), (4, "Y"), (5, "Z"), (6, "A"), (7, "B"), (18, "C"))
 FIRST_COLUMN = 3  # column 2 holds the OPSKIP "/" (001 L16394-16397)
 # Column 1 is the FORTRAN carriage-control character, not a print position: a line of
@@ -143,7 +145,7 @@ class Geout1:
     number: int = 1
     name: str = "GEOUT1"
     section: str = "§3.5.4"
-    template: str = "geout1.j2"
+    template: str = PAGE_TEMPLATE
 
     def line(
         self,
@@ -192,44 +194,88 @@ class Geout1:
             text = text[:1] + "/" + text[2:]
         return text
 
-    def render(self, machine: MachineDefinition, blocks: list[Block], partno: str) -> str:
-        """The pages, each ending with the cut and dwell times accumulated to it; the last
-        with the tape footage (001 L9447-9449; sample footer L10557-10558)."""
-        layout = columns(machine)
-        per_page = max(1, int(machine.number_option(79)))
-        pages: list[dict[str, object]] = []
-        lines: list[str] = []
-        cut = dwell = 0.0
-        origin = (0.0, 0.0, 0.0)
-        for block in blocks:
-            if block.code is Code.INFORMATION and block.cells[2] == 2.0:
-                x, y, z = (block.cells[k] for k in (3, 4, 5))
-                origin = (float(x), float(y), float(z))  # type: ignore[arg-type]
-            cut += block.cut_minutes
-            dwell += block.dwell_minutes
-            if not block.printed:
-                continue
-            lines.append(self.line(machine, layout, block, origin))
-            if len(lines) == per_page:
-                pages.append({"number": len(pages) + 1, "lines": lines, "cut": cut, "dwell": dwell})
-                lines = []
-        if lines or not pages:
-            pages.append({"number": len(pages) + 1, "lines": lines, "cut": cut, "dwell": dwell})
-        pages[-1]["cut"], pages[-1]["dwell"] = cut, dwell
-        title = machine.title or (
+    def listing(self, machine: MachineDefinition, partno: Callable[[], str]) -> Geout1Pages:
+        """The page maker of a streaming listing; ``partno`` gives the PARTNO heading."""
+        return Geout1Pages(self, machine, partno)
+
+    def render(self, machine: MachineDefinition, blocks: Iterable[Block], partno: str) -> str:
+        """The whole listing of a list of blocks at once (scripts and tests)."""
+        pages = self.listing(machine, lambda: partno)
+        text = [pages.block(block, tape_line(block)) for block in blocks]
+        text.append(pages.finish())
+        return "".join(text)
+
+
+class Geout1Pages:
+    """The pages as the blocks come: each page ends with the cut and dwell times
+    accumulated to it, the last with the tape footage (001 L9447-9449; sample footer
+    L10557-10558). A full page is held until the next line comes, since only then is it
+    known not to be the last."""
+
+    def __init__(
+        self, printout: Geout1, machine: MachineDefinition, partno: Callable[[], str]
+    ) -> None:
+        self.printout = printout
+        self.machine = machine
+        self.partno = partno
+        self.layout = columns(machine)
+        self.per_page = max(1, int(machine.number_option(79)))
+        self.leader = stand_in(machine, 64)
+        self.title = machine.title or (
             f"MACHINE {machine.number}" if machine.number else "STANDARD MACHINE"
         )
-        feet = tape_feet(tape_lines(blocks), stand_in(machine, 64))
-        return (
-            environment()
-            .get_template(self.template)
-            .render(
-                pages=pages,
-                title=title,
-                partno=partno,
-                heading=heading(machine),
-                tape_feet=ceil(feet - 1e-9),
-            )
+        self.heading = heading(machine)
+        self.template = environment().get_template(PAGE_TEMPLATE)
+        self.lines: list[str] = []
+        self.full: tuple[list[str], float, float] | None = None  # a full page, held
+        self.pages = 0
+        self.cut = self.dwell = 0.0
+        self.frames = 0
+        self.origin = (0.0, 0.0, 0.0)
+
+    def block(self, block: Block, line: str | None) -> str:
+        if line is not None:
+            self.frames += line_frames(line, self.leader)
+        if block.code is Code.INFORMATION and block.cells[2] == 2.0:
+            x, y, z = (block.cells[k] for k in (3, 4, 5))
+            self.origin = (float(x), float(y), float(z))  # type: ignore[arg-type]
+        self.cut += block.cut_minutes
+        self.dwell += block.dwell_minutes
+        if not block.printed:
+            return ""
+        text = ""
+        if self.full is not None:
+            text = self._page(*self.full, last=False)
+            self.full = None
+        self.lines.append(self.printout.line(self.machine, self.layout, block, self.origin))
+        if len(self.lines) == self.per_page:
+            self.full = (self.lines, self.cut, self.dwell)
+            self.lines = []
+        return text
+
+    def finish(self) -> str:
+        if self.lines or (self.pages == 0 and self.full is None):
+            text = "" if self.full is None else self._page(*self.full, last=False)
+            self.full = None
+            return text + self._page(self.lines, self.cut, self.dwell, last=True)
+        assert self.full is not None
+        lines, _, _ = self.full
+        self.full = None
+        return self._page(lines, self.cut, self.dwell, last=True)
+
+    def _page(self, lines: list[str], cut: float, dwell: float, last: bool) -> str:
+        self.pages += 1
+        return self.template.render(
+            first=self.pages == 1,
+            last=last,
+            number=self.pages,
+            lines=lines,
+            cut=cut,
+            dwell=dwell,
+            title=self.title,
+            partno=self.partno(),
+            heading=self.heading,
+            tape_feet=ceil(frames_to_feet(self.frames) - 1e-9),
         )
 
 

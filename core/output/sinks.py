@@ -1,0 +1,182 @@
+"""Sinks: where finished blocks go, as they are made (the streaming shape of the output).
+
+Every block the output element finishes passes through :class:`Sinks`, which works out its
+tape line once and hands both to each sink: the tape image, the punched tape, the listing
+and the JSON lines. A sink writes at once into a temporary file beside its target; when the
+run ends, ``close`` renames it into place (``ok``) or removes it. A fatal error of the
+manual's §5.7 keeps the listing, with the GEDUMP dump at its end, and never the tape;
+option 110 = +2 after a slide limit keeps the listing and suppresses the tape and punch.
+Nothing holds the blocks of the whole run, except the collecting sink that scripts and
+tests ask for explicitly.
+"""
+
+from __future__ import annotations
+
+import json
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import IO, Protocol
+
+from gecent.core.errors import GecentError
+from gecent.core.machine.definition import MachineDefinition
+from gecent.core.output.block import Block
+from gecent.core.output.files import AtomicFile
+from gecent.core.output.jsonlines import block_record
+from gecent.core.output.punch import Puncher
+from gecent.core.output.tape import tape_line
+
+
+@dataclass(slots=True)
+class Ending:
+    """How the run ended, for the sinks' ``close``: ``ok`` when it finished; ``dump`` is the
+    GEDUMP after a fatal error (the listing keeps it); ``punch_suppressed`` is option
+    110 = +2 after a slide limit (no tape, no punch)."""
+
+    ok: bool
+    punch_suppressed: bool = False
+    dump: list[str] | None = None
+
+
+class Sink(Protocol):
+    def block(self, block: Block, line: str | None) -> None:
+        """A finished block and its tape line (None when it is not punched)."""
+
+    def close(self, ending: Ending) -> None: ...
+
+
+class ListingWriter(Protocol):
+    """A printout's page maker (GEOUT1-4): text for each block as pages fill, the rest at
+    the end."""
+
+    def block(self, block: Block, line: str | None) -> str: ...
+
+    def finish(self) -> str: ...
+
+
+class TapeSink:
+    """The tape image: one line per punched block, written as it comes."""
+
+    def __init__(self, path: str | Path) -> None:
+        self.file = AtomicFile(path)
+
+    def block(self, block: Block, line: str | None) -> None:
+        if line is not None:
+            self.file.write((line + "\n").encode("ascii", "replace"))
+
+    def close(self, ending: Ending) -> None:
+        if ending.ok and not ending.punch_suppressed:
+            self.file.commit()
+        else:
+            self.file.discard()
+
+
+class PunchSink:
+    """The punched tape in EIA RS-244 or ASCII RS-358 code, frame by frame."""
+
+    def __init__(self, path: str | Path, puncher: Puncher) -> None:
+        self.puncher = puncher
+        self.file = AtomicFile(path)
+
+    def block(self, block: Block, line: str | None) -> None:
+        if line is None:
+            return
+        frames_of = self.puncher.frames_of
+        if line.isprintable():
+            self.file.write(frames_of(line))
+        else:  # an empty line (a blank card) or a text holding line breaks: as the image reads
+            for part in (line + "\n").splitlines():
+                self.file.write(frames_of(part))
+
+    def close(self, ending: Ending) -> None:
+        if ending.ok and not ending.punch_suppressed:
+            self.file.commit()
+        else:
+            self.file.discard()
+
+
+class ListingSink:
+    """The printed listing, page by page; after a fatal error it ends with the dump."""
+
+    def __init__(self, path: str | Path, writer: ListingWriter) -> None:
+        self.writer = writer
+        self.file = AtomicFile(path)
+
+    def block(self, block: Block, line: str | None) -> None:
+        text = self.writer.block(block, line)
+        if text:
+            self.file.write(text.encode("utf-8"))
+
+    def close(self, ending: Ending) -> None:
+        if not ending.ok and ending.dump is None:
+            self.file.discard()  # bad input: no listing either
+            return
+        try:
+            text = self.writer.finish()
+        except GecentError:
+            text = ""  # the printout itself cannot be finished: the dump alone
+        if ending.dump is not None:
+            text += "\n".join(ending.dump) + "\n"
+        self.file.write(text.encode("utf-8"))
+        self.file.commit()
+
+
+class JsonSink:
+    """``post --json``: each block as one JSON object on a line, as it is made."""
+
+    def __init__(self, stream: IO[str], machine: MachineDefinition) -> None:
+        self.stream = stream
+        self.machine = machine
+
+    def block(self, block: Block, line: str | None) -> None:
+        record = block_record(block, self.machine, line)
+        self.stream.write(json.dumps(record, separators=(",", ":")) + "\n")
+
+    def close(self, ending: Ending) -> None:
+        self.stream.flush()
+
+
+@dataclass
+class CollectSink:
+    """Keeps every block in a list: for scripts and tests that want the blocks themselves
+    (memory grows with the run; the command line never uses it)."""
+
+    blocks: list[Block] = field(default_factory=list)
+
+    def block(self, block: Block, line: str | None) -> None:
+        self.blocks.append(block)
+
+    def close(self, ending: Ending) -> None:
+        pass
+
+
+class Sinks:
+    """The fan-out: each block's tape line is worked out once, then every sink gets both."""
+
+    def __init__(self, sinks: list[Sink] | None = None) -> None:
+        self.sinks: list[Sink] = list(sinks or [])
+        self.partno = ""  # the first PARTNO's text: the listing's page heading
+        self.closed = False
+        self.emit: Callable[[Block], None] = self._emit
+
+    def add(self, sink: Sink) -> None:
+        self.sinks.append(sink)
+
+    def _emit(self, block: Block) -> None:
+        line = tape_line(block)
+        for sink in self.sinks:
+            sink.block(block, line)
+
+    def close(self, ending: Ending) -> None:
+        """Close every sink, even when one fails; the first failure is raised after."""
+        if self.closed:
+            return
+        self.closed = True
+        failure: BaseException | None = None
+        for sink in self.sinks:
+            try:
+                sink.close(ending if failure is None else Ending(False, dump=ending.dump))
+            except BaseException as exc:  # the others must still close (and clean up)
+                failure = failure or exc
+        if failure is not None:
+            raise failure
