@@ -30,8 +30,8 @@ from gecent.core.motion.sfm import (
 from gecent.core.output.block import Code
 from gecent.core.output.tape import tape_lines
 from gecent.core.plugins import get_plugins
-from gecent.core.reinstate import SFM
 from gecent.core.run import Run
+from gecent.core.state import SFM
 
 from tests.test_post_linear import post
 
