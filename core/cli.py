@@ -245,6 +245,12 @@ def machine_show(key: str, show_all: bool, as_json: bool) -> None:
     show_default=True,
     help="Most segment blocks one CL move may make (0: no bound); a longer move is refused.",
 )
+@click.option(
+    "--no-fast-path",
+    "general_path",
+    is_flag=True,
+    help="Post every record by the general path (for checking the fast path; slower).",
+)
 @_reporting_errors
 def post(
     input_path: str,
@@ -254,6 +260,7 @@ def post(
     punch_to: tuple[str, str] | None,
     as_json: bool,
     max_segments: int,
+    general_path: bool,
 ) -> None:
     """Postprocess a CL file into a tape image and a printed listing.
 
@@ -278,7 +285,14 @@ def post(
         click.echo(str(diagnostic), err=True)
 
     run_post(
-        input_path, plugins, override, _progress(input_path), make_sinks, report, max_segments
+        input_path,
+        plugins,
+        override,
+        _progress(input_path),
+        make_sinks,
+        report,
+        max_segments,
+        fast=not general_path,
     )
 
 

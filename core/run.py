@@ -45,6 +45,7 @@ from gecent.core.machine.selection import (
 from gecent.core.motion.circle import CircularMotion
 from gecent.core.motion.control_cycles import ControlCycles
 from gecent.core.motion.cycles import Cycle, cycle_legs
+from gecent.core.motion.fastpath import FastLinear
 from gecent.core.motion.guard import DEFAULT_MAX_SEGMENTS, CoordinateGuard, check_finite
 from gecent.core.motion.linear import LinearMotion, godlta_delta
 from gecent.core.motion.positioning import PositioningMotion
@@ -74,8 +75,12 @@ class Run:
         sinks: Sinks | None = None,
         report: Callable[[Diagnostic], None] | None = None,
         max_segments: int = DEFAULT_MAX_SEGMENTS,
+        fast: bool = True,
     ) -> None:
         self.plugins = plugins
+        self.fast_allowed = fast  # False: every record by the general path (tests)
+        self.use_fast_path = fast
+        self._fast: FastLinear | None = None
         self.result = RunResult(machine=machine)
         if sinks is None:  # no outputs named: keep the blocks for the caller
             collector = CollectSink(self.result.blocks)
@@ -198,6 +203,8 @@ class Run:
         self._output = self._motion = self._circle = None
         self._rapid_traverse = self._spindle = self._tool_element = self._rotary = None
         self._guard = None
+        self._fast = None
+        self.use_fast_path = self.fast_allowed
         if previous is not None:
             self.output.cut_minutes = previous.cut_minutes
             self.output.dwell_minutes = previous.dwell_minutes
@@ -270,48 +277,89 @@ class Run:
 
     def _process(self, records: Iterator[Record]) -> RunResult:
         self._open_program()
+        fast: FastLinear | None = None
+        result = self.result
+        state = self.state
+        units = self.units
+        goto = MotionSubtype.GOTO
         for record in records:
             self._file = record.file
             self._record = record
-            self.result.records += 1
+            result.records += 1
             if self.finished:
                 raise InputError("record after FINI", record.where)
-            self.state.sequence = record.number
-            record = self.units.record(record)
-            self._check_values(record)
-            if self._circle is not None and self._circle.collecting:
-                if isinstance(record, Motion) and record.subtype is MotionSubtype.CONTINUATION:
-                    self._circle.add(record)
-                    continue
-                self._circle.finish()  # any other record ends the circle (001 L4749-4781)
-            if isinstance(record, Motion):
-                self._motion_record(record)
-            elif isinstance(record, Statement):
-                handler = self._statements.get(record.major)
-                if handler is not None:
-                    handler(self, record)
-                elif record.major in vocabulary().gecent_majors:
-                    raise NotYetSupported(f"{record.major} statement", record.where)
-                else:  # "not recognized ... therefore, disregarded" (001 L3203-3205)
-                    self.warn(Diagnostic(f"{record.major} {UNKNOWN_WORD}", record.where))
-            elif isinstance(record, Arelem):
-                self._arelem(record)
-            elif isinstance(record, Circle):
-                self.circle.surface(record)  # ignored on a linear-only control (option 9 = 0)
-            elif isinstance(record, Fini):
-                self._close_program(record)
-                self.text_block(Block(Code.FINI, record.number))
-                self.finished = True
-            elif isinstance(record, Comment | PartText | Surface | Other):
+            state.sequence = record.number
+            record = units.record(record)
+            if (
+                fast is not None
+                and type(record) is Motion
+                and record.subtype is goto
+                and fast.goto(record)
+            ):
                 continue
-            else:
-                kind = type(record).__name__.upper()
-                raise NotYetSupported(
-                    f"{kind} record (type {_TYPE_NAMES.get(kind, kind)})", record.where
-                )
-            self._collect_notes(record)
+            fast = None  # the general path: the conditions are looked at again after it
+            self._general(record)
+            fast = self._fast_path()
         if self._circle is not None and self._circle.collecting:
             self._circle.finish()
+        return self._finish()
+
+    def _fast_path(self) -> FastLinear | None:
+        """The fast path (core/motion/fastpath.py), when nothing special is in force."""
+        if not self.use_fast_path or self._output is None:
+            return None  # (the general path makes the elements, with their errors)
+        fast = self._fast
+        if fast is None:
+            if self._guard is None:
+                self._guard = CoordinateGuard(self.machine, self.output.words.shuffle)
+            fast = self._fast = FastLinear(
+                self.state, self.output, self.motion, self.sinks, self._guard
+            )
+            if not fast.possible:
+                self.use_fast_path = False
+                return None
+        circle = self._circle
+        special = self.cycle is not None or (
+            circle is not None and (circle.collecting or circle.centre is not None)
+        )
+        return fast if fast.ready(special) else None
+
+    def _general(self, record: Record) -> None:
+        """One record through the dispatcher (the general path)."""
+        self._check_values(record)
+        if self._circle is not None and self._circle.collecting:
+            if isinstance(record, Motion) and record.subtype is MotionSubtype.CONTINUATION:
+                self._circle.add(record)
+                return
+            self._circle.finish()  # any other record ends the circle (001 L4749-4781)
+        if isinstance(record, Motion):
+            self._motion_record(record)
+        elif isinstance(record, Statement):
+            handler = self._statements.get(record.major)
+            if handler is not None:
+                handler(self, record)
+            elif record.major in vocabulary().gecent_majors:
+                raise NotYetSupported(f"{record.major} statement", record.where)
+            else:  # "not recognized ... therefore, disregarded" (001 L3203-3205)
+                self.warn(Diagnostic(f"{record.major} {UNKNOWN_WORD}", record.where))
+        elif isinstance(record, Arelem):
+            self._arelem(record)
+        elif isinstance(record, Circle):
+            self.circle.surface(record)  # ignored on a linear-only control (option 9 = 0)
+        elif isinstance(record, Fini):
+            self._close_program(record)
+            self.text_block(Block(Code.FINI, record.number))
+            self.finished = True
+        elif isinstance(record, Comment | PartText | Surface | Other):
+            return
+        else:
+            kind = type(record).__name__.upper()
+            raise NotYetSupported(
+                f"{kind} record (type {_TYPE_NAMES.get(kind, kind)})", record.where
+            )
+        self._collect_notes(record)
+
+    def _finish(self) -> RunResult:
         if not self.finished:
             self.warn(Diagnostic("NO FINI STATEMENT AT THE END OF THE CL FILE"))
         self.result.cut_minutes = self.output.cut_minutes
@@ -478,6 +526,7 @@ def post(
     sinks: Callable[[MachineDefinition], Sinks] | None = None,
     report: Callable[[Diagnostic], None] | None = None,
     max_segments: int = DEFAULT_MAX_SEGMENTS,
+    fast: bool = True,
 ) -> RunResult:
     """Select the machine (first pass up to MACHIN, as GEINIT does), then process the file;
     ``watch`` may wrap the records of the main pass (a progress bar). ``sinks`` makes the
@@ -486,7 +535,12 @@ def post(
     request, notes = first_machin(read_cl(path, plugins))
     machine = resolve_machine(plugins, machine_override, request)
     run = Run(
-        machine, plugins, sinks(machine) if sinks is not None else None, report, max_segments
+        machine,
+        plugins,
+        sinks(machine) if sinks is not None else None,
+        report,
+        max_segments,
+        fast,
     )
     for note in notes:
         run.warn(note)

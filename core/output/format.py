@@ -90,8 +90,21 @@ class RegisterFormatter:
         """The printed and punched forms. ``suppress_leading`` (option 51 = -2, the 100M's
         G11/G12 departures) drops the punched integer digits' leading zeros and that many
         zeros after the point (001 L16270-16295); the printed form keeps them."""
+        units = _units(abs(value), self.fmt.right)
+        return self.format_units(units, value < 0, value, suppress_leading)
+
+    def format_units(
+        self,
+        units: int,
+        negative: bool,
+        value: float | None = None,
+        suppress_leading: int | None = None,
+    ) -> Formatted:
+        """The same, from the magnitude in units of the format's last decimal (a whole
+        number of steps on the fast path); ``value`` is only for an overflow's message."""
         fmt = self.fmt
-        units = _units(abs(value), fmt.right)
+        if value is None:
+            value = (-units if negative else units) / float(10**fmt.right)
         if self.modern:
             return self._decimal(value, units) if self.decimal else self._bare(value, units)
         digits = str(units).rjust(fmt.right + 1, "0")
@@ -101,7 +114,7 @@ class RegisterFormatter:
             raise FormatOverflow(self.letter, value, fmt)
         whole = whole.rjust(fmt.left, "0")
         shown = fraction.rstrip("0").ljust(fmt.right) if self.drop_trailing else fraction
-        sign = ("-" if value < 0 and units else "+") if fmt.signed else ""
+        sign = ("-" if negative and units else "+") if fmt.signed else ""
         printed = sign + whole + ("." if self.point else "") + shown
         punched = (sign + whole + shown).replace(" ", "")
         if suppress_leading is not None:

@@ -64,6 +64,9 @@ class TapeSink:
         if line is not None:
             self.file.write((line + "\n").encode("ascii", "replace"))
 
+    def line(self, line: str) -> None:
+        self.file.write((line + "\n").encode("ascii", "replace"))
+
     def close(self, ending: Ending) -> None:
         if ending.ok and not ending.punch_suppressed:
             self.file.commit()
@@ -79,8 +82,10 @@ class PunchSink:
         self.file = AtomicFile(path)
 
     def block(self, block: Block, line: str | None) -> None:
-        if line is None:
-            return
+        if line is not None:
+            self.line(line)
+
+    def line(self, line: str) -> None:
         frames_of = self.puncher.frames_of
         if line.isprintable():
             self.file.write(frames_of(line))
@@ -162,10 +167,25 @@ class Sinks:
     def add(self, sink: Sink) -> None:
         self.sinks.append(sink)
 
+    @property
+    def lines_only(self) -> bool:
+        """Every sink takes tape lines alone (tape, punch): the fast path makes no Block."""
+        return all(isinstance(sink, TapeSink | PunchSink) for sink in self.sinks)
+
     def _emit(self, block: Block) -> None:
         line = tape_line(block)
         for sink in self.sinks:
             sink.block(block, line)
+
+    def emit_known(self, block: Block, line: str) -> None:
+        """A block whose tape line is known already (the fast path)."""
+        for sink in self.sinks:
+            sink.block(block, line)
+
+    def emit_line(self, line: str) -> None:
+        """A tape line alone, when :attr:`lines_only`."""
+        for sink in self.sinks:
+            sink.line(line)  # type: ignore[attr-defined]
 
     def close(self, ending: Ending) -> None:
         """Close every sink, even when one fails; the first failure is raised after."""
