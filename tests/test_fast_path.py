@@ -13,19 +13,10 @@ from gecent.core.cli import main
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from .conftest import ROOT, SHARED
+from .conftest import ROOT
+from .golden.cases import inputs
 
-CORPUS = SHARED / "corpus"
-INPUTS = sorted(
-    [
-        *CORPUS.glob("creo/*.ncl.*"),
-        *CORPUS.glob("apt4/*.apt"),
-        *CORPUS.glob("apt4/*.cl3"),
-        *CORPUS.glob("solidworks-cam/*.apt"),
-    ]
-    + sorted((ROOT / "examples").glob("*.apt"))
-)
-INPUTS = [p for p in INPUTS if not p.name.endswith(".lis")]
+INPUTS = [ROOT / source for source in inputs()]
 MACHINES = ["23", "4", "24", "standard", "linuxcnc-mill", "linuxcnc-mill-inch", "fanuc-mill"]
 MACHINES += ["fanuc-lathe"]
 MODERN = {"linuxcnc-mill", "linuxcnc-mill-inch", "fanuc-mill", "fanuc-lathe"}
@@ -137,7 +128,9 @@ def _program(draw: st.DrawFn) -> str:
 
 
 @pytest.mark.parametrize("machine", ["23", "4", "standard", "linuxcnc-mill", "fanuc-lathe"])
-@settings(max_examples=30, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
+@settings(
+    max_examples=30, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture]
+)
 @given(program=_program())
 def test_generated_programs_post_the_same_by_both_paths(
     machine: str, program: str, tmp_path_factory: pytest.TempPathFactory

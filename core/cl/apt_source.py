@@ -17,7 +17,7 @@ The reader is a generator: memory does not grow with the file.
 from __future__ import annotations
 
 import re
-from collections.abc import Iterable, Iterator
+from collections.abc import Callable, Iterable, Iterator
 
 from gecent.core.cl.records import (
     Arelem,
@@ -53,6 +53,11 @@ _TOKEN = re.compile(
 _NUMBER_ITEM = r"\s*[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?\s*"
 _NUMBER_LIST = re.compile(rf"{_NUMBER_ITEM}(?:,{_NUMBER_ITEM})*\Z")
 _MAJOR = re.compile(r"\s*((?:[A-Za-z]|\d+[A-Za-z])[A-Za-z0-9_]*)")
+# the reader's fast path: a whole one-line "GOTO / x, y, z" (no continuation, no comment)
+_ONE_LINE_GOTO = re.compile(
+    rf"\s*GOTO\s*/({_NUMBER_ITEM}),({_NUMBER_ITEM}),({_NUMBER_ITEM})[\r\n]*\Z"
+)
+GotoLine = tuple[int, tuple[float, float, float]]
 
 
 class _Line:
@@ -78,11 +83,19 @@ class _Line:
         return SourcePosition(file, line, column + offset - start)
 
 
-def _logical_lines(lines: Iterable[str]) -> Iterator[tuple[str, _Line]]:
-    """Yield ("statement" | "comment", logical line) with continuations joined."""
+def _logical_lines(
+    lines: Iterable[str], fast: Callable[[], bool] = lambda: False
+) -> Iterator[tuple[str, _Line | GotoLine]]:
+    """Yield ("statement" | "comment", logical line) with continuations joined, or, while
+    ``fast()`` holds, ("goto", (line, point)) for a one-line GOTO of three numbers."""
     pending: _Line | None = None
     pending_kind = "statement"
+    one_line_goto = _ONE_LINE_GOTO.match
     for number, raw in enumerate(lines, start=1):
+        if pending is None and (found := one_line_goto(raw)) is not None and fast():
+            x, y, z = found.groups()
+            yield "goto", (number, (float(x), float(y), float(z)))
+            continue
         line = raw.rstrip("\r\n")
         if pending is not None and pending_kind == "comment":
             stripped = line.rstrip()
@@ -134,7 +147,14 @@ class AptSourceReader:
         self._vocabulary = vocabulary()
 
     def read_lines(self, lines: Iterable[str]) -> Iterator[Record]:
-        for kind, logical in _logical_lines(lines):
+        file = self.file
+        goto = MotionSubtype.GOTO
+        for kind, logical in _logical_lines(lines, lambda: not self.multiax):
+            if isinstance(logical, tuple):
+                line, point = logical
+                self.number += 1
+                yield Motion(file, line, self.number, goto, (point,))
+                continue
             if kind == "comment":
                 self.number += 1
                 yield Comment(self.file, logical.line, self.number, logical.text.strip())

@@ -66,7 +66,7 @@ Numbers in postprocessor statements are always floating point, as an APT process
 writes them; ``int`` is kept for the integer items of binary CL files."""
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(slots=True, unsafe_hash=True)
 class Record:
     """Where a record came from: ``line`` is the source line (APT text) or the ISN of the
     statement that produced it (binary CL); ``number`` the CL record number; ``offset`` the
@@ -82,19 +82,19 @@ class Record:
         return SourcePosition(self.file, self.line, None, self.number, self.offset)
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(slots=True, unsafe_hash=True)
 class Comment(Record):
     text: str
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(slots=True, unsafe_hash=True)
 class PartText(Record):
     """Type 1000: the source statement text (binary CL files carry one per statement)."""
 
     text: str
 
 
-@dataclass(frozen=True, slots=True, eq=False)
+@dataclass(slots=True, eq=False)
 class Statement(Record):
     """Type 2000: a postprocessor statement, ``MAJOR/args``.
 
@@ -125,7 +125,7 @@ class Statement(Record):
         return tuple(float(a) for a in self.args if isinstance(a, int | float))
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(slots=True, unsafe_hash=True)
 class Circle(Record):
     """Type 3000 circle (canonical form xc, yc, zc, i, j, k, r) governing the next motion."""
 
@@ -135,7 +135,7 @@ class Circle(Record):
     position: int = 0
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(slots=True, unsafe_hash=True)
 class Surface(Record):
     """Type 3000 data for a drive surface that is not a circle (GECENT ignores it, §3.3.5)."""
 
@@ -147,7 +147,7 @@ class Surface(Record):
     use: int = 2
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(slots=True, unsafe_hash=True)
 class Motion(Record):
     """Type 5000: points of a FROM, GODLTA, GOTO or continuation record.
 
@@ -161,7 +161,7 @@ class Motion(Record):
     subscript: int = 0
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(slots=True, unsafe_hash=True)
 class Arelem(Record):
     """Type 6000 ARELEM flags: 4 INTOL, 5 OUTTOL, 6 CUTTER (others are read and kept)."""
 
@@ -169,19 +169,19 @@ class Arelem(Record):
     values: tuple[float, ...]
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(slots=True, unsafe_hash=True)
 class Multiax(Record):
     """Type 9000: multiaxis on (subtype 2) or off; points then carry i, j, k."""
 
     on: bool
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(slots=True, unsafe_hash=True)
 class Fini(Record):
     """Type 14000: the end of the CL file."""
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(slots=True, unsafe_hash=True)
 class Other(Record):
     """A record of a type GECENT reads and ignores (4000, 7000, 8000, 10000-13000, and
     unused subtypes), kept so that nothing is lost on the way through."""
