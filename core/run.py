@@ -290,13 +290,13 @@ class Run:
                 raise InputError("record after FINI", record.where)
             state.sequence = record.number
             record = units.record(record)
-            if (
-                fast is not None
-                and type(record) is Motion
-                and record.subtype is goto
-                and fast.goto(record)
-            ):
-                continue
+            if type(record) is Motion and record.subtype is goto:
+                circle = self._circle
+                if fast is None and circle is not None and circle.collecting:
+                    circle.finish()  # a GOTO ends the arc before it, as any record does
+                    fast = self._fast_path()
+                if fast is not None and fast.goto(record):
+                    continue
             fast = None  # the general path: the conditions are looked at again after it
             self._general(record)
             fast = self._fast_path()

@@ -18,10 +18,12 @@ tapes and listings.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from math import isclose, log10
 
 from gecent.core.absent import ABSENT
 from gecent.core.cl.records import Motion
+from gecent.core.feed.rapid import ONE_SHOT
 from gecent.core.motion.guard import CoordinateGuard
 from gecent.core.motion.linear import LinearMotion
 from gecent.core.output.block import Block, Code
@@ -97,8 +99,12 @@ class FastLinear:
                 axis, sign, factor = targets[location]
                 scale = self._unit_scale(formatter)
                 self.slots.append((location, formatter, axis, sign, factor, scale))
+        # option 46: rapid shifts gears by M codes; without, leaving a one-shot rapid is only
+        # the flags (RAPIDX), which this routine can do
+        self.gear_shifts = machine.number_option(46) != 0
         self.g_words: dict[float, Formatted] = {}
         self.blocks_wanted = not sinks.lines_only
+        self.goto = self.compile()
 
     def _unit_scale(self, formatter: RegisterFormatter) -> int | None:
         """Units of the format's last decimal per step, when whole (format as fine as the
@@ -109,9 +115,9 @@ class FastLinear:
 
     def ready(self, special: bool) -> bool:
         """Nothing special in force (``special``: the run has a circle or cycle going): no
-        thread, rapid, SFM, stop or END awaiting its
-        FROM, circle, OPSKIP, SEQNO series, pending S or M code, unfinished program start,
-        feed mode to change, note to report; and a feed programmed."""
+        rapid (but the move after a one-shot rapid on a machine without gear shifts), thread,
+        SFM, stop or END awaiting its FROM, OPSKIP, SEQNO series, pending S or M code,
+        unfinished program start, feed mode to change or note to report; a feed given."""
         state = self.state
         feed = state.feed
         modes = state.modes
@@ -121,8 +127,10 @@ class FastLinear:
             self.possible
             and not special
             and not feed.rapid_requested
-            and not feed.rapid_mode
-            and not feed.rapid_ipm
+            and (
+                (not feed.rapid_mode and not feed.rapid_ipm)
+                or (feed.rapid_mode == ONE_SHOT and not self.gear_shifts)
+            )
             and not state.threading.armed
             and not state.sfm.active
             and not modes.ended
@@ -139,149 +147,264 @@ class FastLinear:
             and not output.diagnostics
         )
 
-    def goto(self, record: Motion) -> bool:
-        points = record.points
-        if len(points) != 1:
-            return False
-        point = points[0]
-        if len(point) != 3:
-            return False
+    def compile(self) -> Callable[[Motion], bool]:
+        """The routine itself: a closure over this machine's constants and the run's state
+        objects, so the loop reads locals rather than attributes."""
         state = self.state
-        position = state.position
-        tx, ty, tz = position.translation
-        px, py, pz = point[0] + tx, point[1] + ty, point[2] + tz
-        reach = self.reach
-        # "not <=" also refuses NaN: the general path reports it
-        if not (abs(px) <= reach[0] and abs(py) <= reach[1] and abs(pz) <= reach[2]):
-            return False
-        step = self.step
-        sx = int(abs(px) / step + 0.5001)
-        sy = int(abs(py) / step + 0.5001)
-        sz = int(abs(pz) / step + 0.5001)
-        if px < 0:
-            sx = -sx
-        if py < 0:
-            sy = -sy
-        if pz < 0:
-            sz = -sz
-        previous = position.previous
-        dx, dy, dz = sx - previous[0], sy - previous[1], sz - previous[2]
-        two_axes = self.axes == 2
-        largest = max(abs(dx), abs(dy)) if two_axes else max(abs(dx), abs(dy), abs(dz))
-        if largest > self.depmax:
-            return False  # to be segmented: the general path
-        present_part = position.present_part
-        present_part[0], present_part[1], present_part[2] = px, py, pz
-        present = position.present
-        present[0], present[1], present[2] = sx, sy, sz
-        if not largest:
-            return True  # no move: the previous point stays (001 L4283-4290)
         output = self.output
-        code = output.linear_codes.select(largest)
-        if two_axes:
-            length = (0 + (dx * step) ** 2 + (dy * step) ** 2) ** 0.5
-        else:
-            length = (0 + (dx * step) ** 2 + (dy * step) ** 2 + (dz * step) ** 2) ** 0.5
-        feed = state.feed
-        f_format = None
-        if self.modern.direct_feed:
-            command = feed.per_revolution_value if feed.per_revolution else feed.ipm
-            ipm = feed.ipm
-        else:
-            command, ipm, f_format = output.feed.command(
-                feed.ipm, code.gdimul, length, code.size_class
-            )
-        cut_minutes = length / ipm
-        output.cut_minutes += cut_minutes
-        state.pending.rpm = None
-        number = record.number
-        sequence = number % self.sequence_limit if number > self.sequence_limit else number
-        g_code = float(code.code)
-        modern = self.modern
-        placed = modern.absolute
-        # the point reached: a two-axis machine's third axis stays where it was
-        reached = (sx, sy, previous[2]) if two_axes else (sx, sy, sz)
-        if placed:
-            at = modern.at
-            if at is None:
-                moved = (True, True, True)
-            else:
-                moved = (at[0] != sx, at[1] != sy, two_axes or at[2] != sz)
-            modern.at = [sx, sy] if two_axes else [sx, sy, sz]
-            values = (sx, sy, sz)
-        else:
-            moved = (True, True, True)
-            values = (dx, dy, dz)
-        if modern.active:
-            modern.ended = False
         words = self.words
-        printed_words: list[tuple[int, str]] = []
-        punched_words: list[str] = []
+        modern = self.modern
+        position = state.position
+        previous = position.previous
+        present = position.present
+        present_part = position.present_part
+        previous_part = position.previous_part
+        feed = state.feed
+        pending = state.pending
+        step = self.step
+        reach_x, reach_y, reach_z = self.reach
+        depmax = self.depmax
+        two_axes = self.axes == 2
+        select = output.linear_codes.select
+        feed_command = output.feed.command
+        direct_feed = modern.direct_feed
+        placed = modern.absolute
+        modern_active = modern.active
+        sequence_limit = self.sequence_limit
+        separator = self.separator
+        suppress_g = words.suppress_g
+        suppress_f = words.suppress_f
         zero_rule = words.zero_rule
-        for location, formatter, axis, sign, factor, scale in self.slots:
-            if axis >= 0:
-                if not moved[axis]:
-                    continue
-                steps = values[axis]
-                if scale is not None and -EXACT_UNITS < steps < EXACT_UNITS:
-                    negative = steps < 0 if sign > 0 else steps > 0
-                    text = formatter.format_units(abs(steps) * factor * scale, negative)
-                else:
-                    text = formatter.format(sign * (steps * step) * factor)
-                if (
-                    (not placed or location > 7)
-                    and location in ZERO_RULE_CELLS
-                    and text.punched.strip("+-0.") == ""
-                ):
-                    if zero_rule == 0:
-                        continue
-                    printed_words.append((location, text.printed))
-                    punched_words.append(formatter.letter)
-                    continue
-            elif location == 1:
-                if scale is not None:
-                    text = formatter.format_units(sequence, False)
-                else:
-                    text = formatter.format(float(sequence))
-            elif location == 2:
-                if words.suppress_g and g_code == words.previous_g:
-                    continue
-                words.previous_g = g_code
-                text = self.g_words.get(g_code) or self._g_word(formatter, g_code)
+        f_formatter = words._f_formatter
+        g_words = self.g_words
+        slots = [
+            (location, formatter, axis, sign, factor, scale, _units_text(formatter), letter)
+            for (location, formatter, axis, sign, factor, scale) in self.slots
+            for letter in (formatter.letter,)
+        ]
+        blocks_wanted = self.blocks_wanted
+        emit_line = self.sinks.emit_line
+        emit_known = self.sinks.emit_known
+        linear = Code.LINEAR
+
+        def goto(record: Motion) -> bool:
+            points = record.points
+            if len(points) != 1:
+                return False
+            point = points[0]
+            if len(point) != 3:
+                return False
+            tx, ty, tz = position.translation
+            px = point[0] + tx
+            py = point[1] + ty
+            pz = point[2] + tz
+            # "not <=" also refuses NaN: the general path reports it
+            if not (abs(px) <= reach_x and abs(py) <= reach_y and abs(pz) <= reach_z):
+                return False
+            sx = int(abs(px) / step + 0.5001)
+            sy = int(abs(py) / step + 0.5001)
+            sz = int(abs(pz) / step + 0.5001)
+            if px < 0:
+                sx = -sx
+            if py < 0:
+                sy = -sy
+            if pz < 0:
+                sz = -sz
+            dx = sx - previous[0]
+            dy = sy - previous[1]
+            dz = sz - previous[2]
+            ax = -dx if dx < 0 else dx
+            ay = -dy if dy < 0 else dy
+            largest = ax if ax > ay else ay
+            if not two_axes:
+                az = -dz if dz < 0 else dz
+                if az > largest:
+                    largest = az
+            if largest > depmax:
+                return False  # to be segmented: the general path
+            if feed.rapid_mode:  # the move after a one-shot rapid: RAPIDX, no gear to shift
+                feed.rapid_mode = 0
+                feed.rapid_ipm = 0.0
+                feed.rapid_low = False
+            present_part[0] = px
+            present_part[1] = py
+            present_part[2] = pz
+            present[0] = sx
+            present[1] = sy
+            present[2] = sz
+            if not largest:
+                return True  # no move: the previous point stays (001 L4283-4290)
+            code = select(largest)
+            if two_axes:
+                length = (0 + (dx * step) ** 2 + (dy * step) ** 2) ** 0.5
             else:
-                if words.suppress_f and command == words.previous_f:
-                    continue
-                words.previous_f = command
-                if f_format is not None:
-                    formatter = words._f_formatter(f_format)
-                text = formatter.format(command)
-            printed_words.append((location, text.printed))
-            punched_words.append(formatter.letter + text.punched)
-        line = self.separator.join(punched_words)
-        position.previous_part[:] = present_part
-        previous[:] = present
-        if not self.blocks_wanted:
-            self.sinks.emit_line(line)
+                length = (0 + (dx * step) ** 2 + (dy * step) ** 2 + (dz * step) ** 2) ** 0.5
+            f_format = None
+            if direct_feed:
+                command = feed.per_revolution_value if feed.per_revolution else feed.ipm
+                ipm = feed.ipm
+            else:
+                command, ipm, f_format = feed_command(
+                    feed.ipm, code.gdimul, length, code.size_class
+                )
+            cut_minutes = length / ipm
+            output.cut_minutes += cut_minutes
+            pending.rpm = None
+            number = record.number
+            sequence = number % sequence_limit if number > sequence_limit else number
+            g_code = float(code.code)
+            # the point reached: a two-axis machine's third axis stays where it was
+            reached = (sx, sy, previous[2]) if two_axes else (sx, sy, sz)
+            if placed:
+                at = modern.at
+                if at is None:
+                    moved: tuple[bool, bool, bool] = (True, True, True)
+                else:
+                    moved = (at[0] != sx, at[1] != sy, two_axes or at[2] != sz)
+                modern.at = [sx, sy] if two_axes else [sx, sy, sz]
+                values = (sx, sy, sz)
+            else:
+                moved = (True, True, True)
+                values = (dx, dy, dz)
+            if modern_active:
+                modern.ended = False
+            printed_words: list[tuple[int, str]] = []
+            punched_words: list[str] = []
+            for location, formatter, axis, sign, factor, scale, text_of, letter in slots:
+                if axis >= 0:
+                    if not moved[axis]:
+                        continue
+                    steps = values[axis]
+                    if scale is not None and -EXACT_UNITS < steps < EXACT_UNITS:
+                        negative = steps < 0 if sign > 0 else steps > 0
+                        units = (steps if steps >= 0 else -steps) * factor * scale
+                        printed, punched = text_of(units, negative)
+                    else:
+                        text = formatter.format(sign * (steps * step) * factor)
+                        printed, punched = text.printed, text.punched
+                    if (
+                        (not placed or location > 7)
+                        and location in ZERO_RULE_CELLS
+                        and punched.strip("+-0.") == ""
+                    ):
+                        if zero_rule == 0:
+                            continue
+                        printed_words.append((location, printed))
+                        punched_words.append(letter)
+                        continue
+                elif location == 1:
+                    if scale is not None:
+                        printed, punched = text_of(sequence, False)
+                    else:
+                        text = formatter.format(float(sequence))
+                        printed, punched = text.printed, text.punched
+                elif location == 2:
+                    if suppress_g and g_code == words.previous_g:
+                        continue
+                    words.previous_g = g_code
+                    text = g_words.get(g_code) or self._g_word(formatter, g_code)
+                    printed, punched = text.printed, text.punched
+                else:
+                    if suppress_f and command == words.previous_f:
+                        continue
+                    words.previous_f = command
+                    if f_format is not None:
+                        formatter = f_formatter(f_format)
+                    text = formatter.format(command)
+                    printed, punched = text.printed, text.punched
+                printed_words.append((location, printed))
+                punched_words.append(letter + punched)
+            line = separator.join(punched_words)
+            previous_part[:] = present_part
+            previous[:] = present
+            if not blocks_wanted:
+                emit_line(line)
+                return True
+            block = Block(linear, number)
+            cells = block.cells
+            cells[1] = float(sequence)
+            cells[2] = g_code
+            cells[11] = command
+            cells[15] = 0.0
+            cells[19] = ipm
+            for location, _, axis, sign, factor, _, _, _ in slots:
+                if axis >= 0 and moved[axis]:
+                    cells[location] = sign * (values[axis] * step) * factor
+            block.f_format = f_format
+            block.steps = (dx, dy) if two_axes else (dx, dy, dz)
+            block.position = reached
+            block.cut_minutes = cut_minutes
+            block.words = tuple(printed_words)
+            block.punch = line
+            emit_known(block, line)
             return True
-        block = Block(Code.LINEAR, number)
-        cells = block.cells
-        cells[1] = float(sequence)
-        cells[2] = g_code
-        cells[11] = command
-        cells[15] = 0.0
-        cells[19] = ipm
-        block.f_format = f_format
-        for location, _, axis, sign, factor, _ in self.slots:
-            if axis >= 0 and moved[axis]:
-                cells[location] = sign * (values[axis] * step) * factor
-        block.steps = (dx, dy) if two_axes else (dx, dy, dz)
-        block.position = reached
-        block.cut_minutes = cut_minutes
-        block.words = tuple(printed_words)
-        block.punch = line
-        self.sinks.emit_known(block, line)
-        return True
+
+        return goto
 
     def _g_word(self, formatter: RegisterFormatter, code: float) -> Formatted:
         text = self.g_words[code] = formatter.format(code)
         return text
+
+
+def _units_text(formatter: RegisterFormatter) -> Callable[[int, bool], tuple[str, str]]:
+    """(printed, punched) of a magnitude in units of the format's last decimal: the
+    modern decimal form written out here (it is most of a G-code tape), the others through
+    the formatter itself; an overflow always goes to the formatter, which names it."""
+    fmt = formatter.fmt
+    right = fmt.right
+    if formatter.modern and formatter.decimal:
+        power = 10**right
+        limit = 10**fmt.left
+        width = f"0{right}d"
+
+        def decimal(units: int, negative: bool) -> tuple[str, str]:
+            whole, fraction = divmod(units, power)
+            if whole >= limit:
+                text = formatter.format_units(units, negative)
+                return text.printed, text.punched
+            shown = format(fraction, width).rstrip("0")
+            text_ = f"-{whole}.{shown}" if negative and units else f"{whole}.{shown}"
+            return text_, text_
+
+        return decimal
+
+    def general(units: int, negative: bool) -> tuple[str, str]:
+        text = formatter.format_units(units, negative)
+        return text.printed, text.punched
+
+    if formatter.modern:
+        if not formatter.bare:
+            return general
+        bare_limit = 10**fmt.left
+
+        def bare(units: int, negative: bool) -> tuple[str, str]:
+            if units >= bare_limit:
+                return general(units, negative)  # the formatter names the overflow
+            text_ = f"-{units}" if negative and units else str(units)
+            return text_, text_
+
+        return bare
+    left = fmt.left
+    power = 10**right
+    limit = 10**left
+    signed = fmt.signed
+    point = "." if formatter.point else ""
+    drop = formatter.drop_trailing
+    whole_width = f"0{left}d"
+    fraction_width = f"0{right}d"
+
+    def classic(units: int, negative: bool) -> tuple[str, str]:
+        whole_units, fraction_units = divmod(units, power)
+        if whole_units >= limit:
+            return general(units, negative)  # the formatter names the overflow
+        whole = format(whole_units, whole_width) if left else ""
+        fraction = format(fraction_units, fraction_width) if right else ""
+        kept = fraction.rstrip("0") if drop else fraction
+        sign = ("-" if negative and units else "+") if signed else ""
+        printed = sign + whole + point + (kept.ljust(right) if drop else fraction)
+        punched = sign + whole + kept
+        if not whole and not kept:
+            punched = sign + "0"
+        return printed, punched
+
+    return classic
