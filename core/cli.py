@@ -11,13 +11,10 @@ import threading
 from collections.abc import Callable, Iterable, Iterator
 from functools import wraps
 from pathlib import Path
-from typing import IO, Any, TypeVar
+from typing import IO, TYPE_CHECKING, Any, TypeVar
 
 import click
 from gecent.core import __version__
-from gecent.core.cl.binary_layout import Layout, LayoutError, parse_layout
-from gecent.core.cl.binary_writer import write_binary
-from gecent.core.cl.clprint import clprint_lines, record_json
 from gecent.core.cl.records import Record
 from gecent.core.cl.stream import read_cl
 from gecent.core.errors import (
@@ -29,7 +26,6 @@ from gecent.core.errors import (
 )
 from gecent.core.families import FAMILIES, MachinePack
 from gecent.core.machine.definition import MachineDefinition
-from gecent.core.machine.describe import describe_machine, machine_as_dict
 from gecent.core.motion.guard import DEFAULT_MAX_SEGMENTS
 from gecent.core.output.files import write_atomically
 from gecent.core.output.marks import stand_in
@@ -45,6 +41,9 @@ from gecent.core.output.sinks import (
 )
 from gecent.core.plugins import PluginSet, get_plugins
 from gecent.core.run import post as run_post
+
+if TYPE_CHECKING:
+    from gecent.core.cl.binary_layout import Layout
 
 F = TypeVar("F", bound=Callable[..., Any])
 
@@ -195,6 +194,8 @@ def _missing(key: str) -> MachineDefinition:
 @_reporting_errors
 def machine_show(key: str, show_all: bool, as_json: bool) -> None:
     """Show a machine's resolved tables and options (ID: number, name or a .toml file)."""
+    from gecent.core.machine.describe import describe_machine, machine_as_dict
+
     definition = _load_machine(_plugins(), key)
     if as_json:
         click.echo(json.dumps(machine_as_dict(definition), indent=2))
@@ -364,6 +365,8 @@ def _progress(input_path: str) -> Callable[[Iterator[Record]], Iterator[Record]]
 
 
 def _layout(name: str | None) -> Layout | None:
+    from gecent.core.cl.binary_layout import LayoutError, parse_layout
+
     if name is None:
         return None
     try:
@@ -403,6 +406,8 @@ def cl_command(
     output_path: str | None,
 ) -> None:
     """Print the records of a CL file (text or binary), or convert it to binary."""
+    from gecent.core.cl.binary_writer import write_binary
+
     records = read_cl(input_path, _plugins(), _layout(in_layout))
     if out_layout is not None:
         layout = _layout(out_layout)
@@ -422,6 +427,8 @@ def cl_command(
 
 
 def _print_records(records: Iterable[Record], as_json: bool, write: Callable[[str], Any]) -> None:
+    from gecent.core.cl.clprint import clprint_lines, record_json
+
     if as_json:
         for record in records:
             write(json.dumps(record_json(record)) + "\n")

@@ -170,14 +170,28 @@ def build_plugin_set(
 def _entry_point_modules() -> tuple[list[tuple[ModuleType, _Source]], list[PluginFailure]]:
     modules: list[tuple[ModuleType, _Source]] = []
     failures: list[PluginFailure] = []
+    names: dict[int, str] = {}
+
+    def distribution(point: EntryPoint) -> str:
+        if point.dist is None:
+            return ""
+        if id(point.dist) not in names:
+            names[id(point.dist)] = point.dist.name
+        return names[id(point.dist)]
+
     points: list[EntryPoint] = sorted(
-        entry_points(group=GROUP),
-        key=lambda ep: (ep.dist.name if ep.dist else "", ep.name),
+        entry_points(group=GROUP), key=lambda ep: (distribution(ep), ep.name)
     )
     seen: set[str] = set()
+    # a distribution's name and version come from parsing its METADATA: once each
+    described: dict[int, tuple[str, str]] = {}
     for point in points:
-        dist = point.dist.name if point.dist else "(unknown)"
-        version = point.dist.version if point.dist else ""
+        if point.dist is None:
+            dist, version = "(unknown)", ""
+        else:
+            if id(point.dist) not in described:
+                described[id(point.dist)] = (point.dist.name, point.dist.version)
+            dist, version = described[id(point.dist)]
         if point.name in seen:  # the same distribution seen twice on sys.path
             continue
         seen.add(point.name)

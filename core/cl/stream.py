@@ -6,7 +6,6 @@ from collections import deque
 from collections.abc import Callable, Iterable, Iterator
 
 from gecent.core.cl.binary_layout import Layout
-from gecent.core.cl.binary_reader import read_binary
 from gecent.core.cl.records import Record
 from gecent.core.errors import InputError, SourcePosition
 from gecent.core.families import ClReader
@@ -36,6 +35,8 @@ def choose_reader(path: str, plugins: PluginSet) -> ClReader:
 def read_cl(path: str, plugins: PluginSet, layout: Layout | None = None) -> Iterator[Record]:
     """The records of a CL file; ``layout`` forces a binary layout instead of sniffing."""
     if layout is not None:
+        from gecent.core.cl.binary_reader import read_binary
+
         return read_binary(path, layout)
     return choose_reader(path, plugins).read(path)
 

@@ -6,11 +6,11 @@ A word the vocabulary lacks is still a word: readers keep it with ``code = None`
 
 from __future__ import annotations
 
-import tomllib
 from dataclasses import dataclass
 from functools import cache
 from importlib import resources
 
+from gecent.core import tomldata
 from gecent.core.cl.records import Word
 
 
@@ -43,7 +43,7 @@ class Vocabulary:
 @cache
 def vocabulary() -> Vocabulary:
     raw = resources.files("gecent.core.cl").joinpath("data", "vocabulary.toml").read_bytes()
-    data = tomllib.loads(raw.decode("utf-8"))
+    data = tomldata.loads(raw.decode("utf-8"))
     major = {str(k): int(v) for k, v in data["major"].items()}
     minor = {str(k): int(v) for k, v in data["minor"].items()}
     record_words = {str(k): int(v) for k, v in data.get("record_words", {}).items()}

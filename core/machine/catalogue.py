@@ -7,12 +7,12 @@ Standard Machine value. Machine files override those standard values.
 
 from __future__ import annotations
 
-import tomllib
 from dataclasses import dataclass
 from functools import cache
 from importlib import resources
 from typing import Any, Literal, TypeVar
 
+from gecent.core import tomldata
 from gecent.core.absent import ABSENT, ABSENT_SPELLINGS, Absent
 from pydantic import BaseModel, ConfigDict, Field, ValidationError
 
@@ -118,7 +118,7 @@ class Catalogue:
 
 def _read(name: str) -> dict[str, object]:
     data = resources.files("gecent.core.machine").joinpath("data", name).read_bytes()
-    return tomllib.loads(data.decode("utf-8"))
+    return tomldata.loads(data.decode("utf-8"))
 
 
 SpecT = TypeVar("SpecT", OptionSpec, LocationSpec, RegisterSpec)

@@ -13,6 +13,7 @@ from functools import cache
 from importlib import resources
 from pathlib import Path
 
+from gecent.core import tomldata
 from gecent.core.absent import ABSENT, ABSENT_SPELLINGS, Absent
 from gecent.core.errors import InputError, MachineDefinitionError, SourcePosition
 from gecent.core.machine.catalogue import (
@@ -325,7 +326,7 @@ def _with_warnings(definition: MachineDefinition, warnings: list[str]) -> Machin
 
 def _parse(text: str, origin: str) -> MachineFile:
     try:
-        data = tomllib.loads(text)
+        data = tomldata.loads(text)
     except tomllib.TOMLDecodeError as exc:
         raise InputError(f"not valid TOML: {exc}", SourcePosition(origin)) from None
     try:

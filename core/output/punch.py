@@ -8,11 +8,11 @@ block ends with the end-of-block code (option 67: EIA channel 8, ASCII LF).
 
 from __future__ import annotations
 
-import tomllib
 from collections.abc import Iterable
 from functools import cache
 from importlib import resources
 
+from gecent.core import tomldata
 from gecent.core.errors import InputError
 
 CODES = ("eia", "ascii")
@@ -23,7 +23,7 @@ CARD_FRAMES = 72  # one 72-column card of the tape image
 @cache
 def table(code: str) -> dict[str, int]:
     raw = resources.files("gecent.core.output").joinpath("data", "tape_codes.toml").read_bytes()
-    return {str(k): int(v) for k, v in tomllib.loads(raw.decode("utf-8"))[code].items()}
+    return {str(k): int(v) for k, v in tomldata.loads(raw.decode("utf-8"))[code].items()}
 
 
 class Puncher:

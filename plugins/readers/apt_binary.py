@@ -7,7 +7,6 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from gecent.core.cl.binary_layout import detect_layout
-from gecent.core.cl.binary_reader import read_binary
 from gecent.core.cl.records import Record
 from gecent.core.hookspecs import Register, hookimpl
 
@@ -20,6 +19,8 @@ class BinaryCl:
         return detect_layout(head) is not None
 
     def read(self, path: str) -> Iterator[Record]:
+        from gecent.core.cl.binary_reader import read_binary  # only for binary files
+
         return read_binary(path)
 
 
