@@ -6,7 +6,10 @@ records the outputs of a given commit."""
 from __future__ import annotations
 
 import hashlib
+import os
 import tempfile
+from collections.abc import Iterator
+from contextlib import contextmanager
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -54,9 +57,10 @@ def run_case(source: str, machine: str | None) -> dict[str, object]:
     from gecent.core.cli import main
 
     code = "ascii" if machine in MODERN else "eia"
-    with tempfile.TemporaryDirectory() as folder:
+    with tempfile.TemporaryDirectory() as folder, _in(ROOT):
         out = Path(folder)
-        arguments = ["post", str(ROOT / source), "-o", str(out / "t.tape")]
+        # the input by its project-relative path: a GEDUMP names it, wherever the clone is
+        arguments = ["post", source, "-o", str(out / "t.tape")]
         arguments += ["--listing", str(out / "t.lis"), "--punch", code, str(out / "t.pun")]
         arguments += ["--json"]
         if machine is not None:
@@ -72,3 +76,13 @@ def run_case(source: str, machine: str | None) -> dict[str, object]:
             path = out / name
             outputs[name] = _digest(path.read_bytes() if path.exists() else None)
     return outputs
+
+
+@contextmanager
+def _in(folder: Path) -> Iterator[None]:
+    before = os.getcwd()
+    os.chdir(folder)
+    try:
+        yield
+    finally:
+        os.chdir(before)
