@@ -109,14 +109,6 @@ def heading(machine: MachineDefinition) -> str:
     return line.rstrip()
 
 
-def _place(fields: list[tuple[Column, str]]) -> str:
-    line = ""
-    for column, text in fields:
-        end = column.start - 1 + column.width
-        line = line.ljust(end - len(text)) + text
-    return line.rstrip()
-
-
 def _absolute(value: float, decimals: int) -> str:
     return f"{round(value, decimals) + 0.0:+.{decimals}f}"  # + 0.0: no "-0.0000"
 
@@ -154,45 +146,8 @@ class Geout1:
         block: Block,
         origin: tuple[float, float, float] = (0.0, 0.0, 0.0),
     ) -> str:
-        """One block's line; the operator columns (option 172 = 1) are the absolute values
-        less the ORIGIN (001 L9128-9134)."""
-        if block.code in TEXT_CODES or block.code is Code.LEADER:
-            return block.text or ""
-        if block.code not in PRINTABLE:
-            raise NotYetSupported(f"GEOUT1 line for a CODE {int(block.code)} block")
-        step = machine.number_option(14)
-        operator = 1.0 if machine.number_option(172) == 1 else 0.0
-        shuffle = cell_map(machine.number_option(59), "XYZ")
-        printed = dict(block.words)
-        fields: list[tuple[Column, str]] = []
-        for column in layout:
-            key = column.key
-            if key.isdigit() and block.code is not Code.FROM:
-                text = printed.get(int(key))
-                if text is not None:
-                    fields.append((column, text))
-            elif key.startswith("ABS-") and block.position is not None:
-                cell = int(key[4:])
-                fmt = machine.registers.formats[cell]
-                for internal, target in enumerate(shuffle):
-                    if target is not None and target[0] == cell and fmt is not None:
-                        at = block.position[internal] * step - operator * origin[internal]
-                        value = target[1] * at
-                        fields.append((column, _absolute(value, fmt.right)))
-            elif key == "F-IPM" and block.cells[19] is not ABSENT:
-                fields.append((column, f"{float(block.cells[19]):.3f}".rstrip("0")))
-            elif key == "S-RPM" and block.cells[20] is not ABSENT:
-                fields.append((column, f"{float(block.cells[20]):.1f}".rstrip("0")))
-            elif key == "CLREC" and block.record is not None:
-                fields.append((column, str(block.record)))
-        text = _place(fields)
-        if block.code is Code.FROM:
-            text = "FROM" + text[4:]
-        elif block.code is Code.TMARK:
-            text = "TMARK" + text[5:]
-        if block.punch is not None and block.punch.startswith("/"):
-            text = text[:1] + "/" + text[2:]
-        return text
+        """One block's line (see :class:`LineMaker`)."""
+        return LineMaker(machine, layout).line(block, origin)
 
     def listing(self, machine: MachineDefinition, partno: Callable[[], str]) -> Geout1Pages:
         """The page maker of a streaming listing; ``partno`` gives the PARTNO heading."""
@@ -204,6 +159,90 @@ class Geout1:
         text = [pages.block(block, tape_line(block)) for block in blocks]
         text.append(pages.finish())
         return "".join(text)
+
+
+class LineMaker:
+    """One block's line, with the layout's columns worked out once: the incremental
+    registers as printed, the absolute (or, option 172 = 1, operator: less the ORIGIN,
+    001 L9128-9134) axes, F-IPM, S-RPM and the CL record number."""
+
+    def __init__(self, machine: MachineDefinition, layout: list[Column]) -> None:
+        self.step = machine.number_option(14)
+        self.operator = 1.0 if machine.number_option(172) == 1 else 0.0
+        shuffle = cell_map(machine.number_option(59), "XYZ")
+        self.columns: list[tuple[int, int, int, tuple[tuple[int, int], ...], int]] = []
+        for column in layout:
+            key = column.key
+            end = column.start - 1 + column.width
+            axes: tuple[tuple[int, int], ...] = ()
+            decimals = 0
+            cell = 0
+            if key.isdigit():
+                kind, cell = REGISTER, int(key)
+            elif key.startswith("ABS-"):
+                kind, cell = ABSOLUTE, int(key[4:])
+                fmt = machine.registers.formats[cell]
+                if fmt is not None:
+                    decimals = fmt.right
+                    axes = tuple(
+                        (internal, target[1])
+                        for internal, target in enumerate(shuffle)
+                        if target is not None and target[0] == cell
+                    )
+            else:
+                kind = {"F-IPM": FEED, "S-RPM": SPEED, "CLREC": RECORD}[key]
+            self.columns.append((kind, end, cell, axes, decimals))
+
+    def line(self, block: Block, origin: tuple[float, float, float] = (0.0, 0.0, 0.0)) -> str:
+        code = block.code
+        if code in TEXT_CODES or code is Code.LEADER:
+            return block.text or ""
+        if code not in PRINTABLE:
+            raise NotYetSupported(f"GEOUT1 line for a CODE {int(code)} block")
+        printed = dict(block.words)
+        position = block.position
+        cells = block.cells
+        step = self.step
+        operator = self.operator
+        registers = code is not Code.FROM
+        line = ""
+        for kind, end, cell, axes, decimals in self.columns:
+            if kind == REGISTER:
+                if not registers:
+                    continue
+                text = printed.get(cell)
+                if text is None:
+                    continue
+                line = line.ljust(end - len(text)) + text
+            elif kind == ABSOLUTE:
+                if position is None:
+                    continue
+                for internal, sign in axes:
+                    at = position[internal] * step - operator * origin[internal]
+                    text = _absolute(sign * at, decimals)
+                    line = line.ljust(end - len(text)) + text
+            elif kind == FEED:
+                if cells[19] is not ABSENT:
+                    text = f"{float(cells[19]):.3f}".rstrip("0")
+                    line = line.ljust(end - len(text)) + text
+            elif kind == SPEED:
+                if cells[20] is not ABSENT:
+                    text = f"{float(cells[20]):.1f}".rstrip("0")
+                    line = line.ljust(end - len(text)) + text
+            elif block.record is not None:
+                text = str(block.record)
+                line = line.ljust(end - len(text)) + text
+        line = line.rstrip()
+        if code is Code.FROM:
+            line = "FROM" + line[4:]
+        elif code is Code.TMARK:
+            line = "TMARK" + line[5:]
+        if block.punch is not None and block.punch.startswith("/"):
+            line = line[:1] + "/" + line[2:]
+        return line
+
+
+REGISTER, ABSOLUTE, FEED, SPEED, RECORD = range(5)
 
 
 class Geout1Pages:
@@ -219,6 +258,7 @@ class Geout1Pages:
         self.machine = machine
         self.partno = partno
         self.layout = columns(machine)
+        self.line = LineMaker(machine, self.layout).line
         self.per_page = max(1, int(machine.number_option(79)))
         self.leader = stand_in(machine, 64)
         self.title = machine.title or (
@@ -247,7 +287,7 @@ class Geout1Pages:
         if self.full is not None:
             text = self._page(*self.full, last=False)
             self.full = None
-        self.lines.append(self.printout.line(self.machine, self.layout, block, self.origin))
+        self.lines.append(self.line(block, self.origin))
         if len(self.lines) == self.per_page:
             self.full = (self.lines, self.cut, self.dwell)
             self.lines = []
