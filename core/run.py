@@ -312,8 +312,9 @@ class Run:
         if fast is None:
             if self._guard is None:
                 self._guard = CoordinateGuard(self.machine, self.output.words.shuffle)
+            rapid = self.rapid
             fast = self._fast = FastLinear(
-                self.state, self.output, self.motion, self.sinks, self._guard
+                self.state, self.output, self.motion, self.sinks, self._guard, rapid.motion
             )
             if not fast.possible:
                 self.use_fast_path = False

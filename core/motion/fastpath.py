@@ -23,7 +23,6 @@ from math import isclose, log10
 
 from gecent.core.absent import ABSENT
 from gecent.core.cl.records import Motion
-from gecent.core.feed.rapid import ONE_SHOT
 from gecent.core.motion.guard import CoordinateGuard
 from gecent.core.motion.linear import LinearMotion
 from gecent.core.output.block import Block, Code
@@ -49,12 +48,14 @@ class FastLinear:
         motion: LinearMotion,
         sinks: Sinks,
         guard: CoordinateGuard,
+        rapid_motion: Callable[[float], None],
     ) -> None:
         machine = state.machine
         self.state = state
         self.output = output
         self.motion = motion
         self.sinks = sinks
+        self.rapid_motion = rapid_motion  # TSTFLG: enter or leave rapid before a move
         self.step = motion.step
         self.axes = motion.axes
         self.depmax = motion.depmax
@@ -99,8 +100,8 @@ class FastLinear:
                 axis, sign, factor = targets[location]
                 scale = self._unit_scale(formatter)
                 self.slots.append((location, formatter, axis, sign, factor, scale))
-        # option 46: rapid shifts gears by M codes; without, leaving a one-shot rapid is only
-        # the flags (RAPIDX), which this routine can do
+        # option 46: rapid shifts gears by M codes, which would ride in the move's block;
+        # without, entering and leaving rapid changes only the feed's flags
         self.gear_shifts = machine.number_option(46) != 0
         self.g_words: dict[float, Formatted] = {}
         self.blocks_wanted = not sinks.lines_only
@@ -126,10 +127,9 @@ class FastLinear:
         return (
             self.possible
             and not special
-            and not feed.rapid_requested
             and (
-                (not feed.rapid_mode and not feed.rapid_ipm)
-                or (feed.rapid_mode == ONE_SHOT and not self.gear_shifts)
+                not (feed.rapid_requested or feed.rapid_mode or feed.rapid_ipm)
+                or not self.gear_shifts
             )
             and not state.threading.armed
             and not state.sfm.active
@@ -167,6 +167,9 @@ class FastLinear:
         two_axes = self.axes == 2
         select = output.linear_codes.select
         feed_command = output.feed.command
+        rapid_command = output.rapid.command
+        rapid_motion = self.rapid_motion
+        rapid_code = modern.rapid_code
         direct_feed = modern.direct_feed
         placed = modern.absolute
         modern_active = modern.active
@@ -222,10 +225,15 @@ class FastLinear:
                     largest = az
             if largest > depmax:
                 return False  # to be segmented: the general path
-            if feed.rapid_mode:  # the move after a one-shot rapid: RAPIDX, no gear to shift
-                feed.rapid_mode = 0
-                feed.rapid_ipm = 0.0
-                feed.rapid_low = False
+            if feed.rapid_requested or feed.rapid_mode:
+                # PLENTH from the previous point, as the general path measures it
+                path = (
+                    0
+                    + (px - previous_part[0]) ** 2
+                    + (py - previous_part[1]) ** 2
+                    + (pz - previous_part[2]) ** 2
+                ) ** 0.5
+                rapid_motion(0.0 + path)
             present_part[0] = px
             present_part[1] = py
             present_part[2] = pz
@@ -240,19 +248,36 @@ class FastLinear:
             else:
                 length = (0 + (dx * step) ** 2 + (dy * step) ** 2 + (dz * step) ** 2) ** 0.5
             f_format = None
-            if direct_feed:
+            rapid = bool(feed.rapid_ipm)
+            g_code = float(code.code)
+            command: float | None
+            if rapid:
+                departures = (
+                    (dx * step, dy * step) if two_axes else (dx * step, dy * step, dz * step)
+                )
+                command, ipm = rapid_command(
+                    departures, code.gdimul, feed.rapid_ipm, low=feed.rapid_low
+                )
+                if rapid_code is not None:  # G00: the control's own rapid, no F
+                    g_code = rapid_code
+                    command = None
+                distance = 0.0
+                for departure in departures:
+                    distance += departure * departure
+                cut_minutes = distance**0.5 / ipm
+            elif direct_feed:
                 command = feed.per_revolution_value if feed.per_revolution else feed.ipm
                 ipm = feed.ipm
+                cut_minutes = length / ipm
             else:
                 command, ipm, f_format = feed_command(
                     feed.ipm, code.gdimul, length, code.size_class
                 )
-            cut_minutes = length / ipm
+                cut_minutes = length / ipm
             output.cut_minutes += cut_minutes
             pending.rpm = None
             number = record.number
             sequence = number % sequence_limit if number > sequence_limit else number
-            g_code = float(code.code)
             # the point reached: a two-axis machine's third axis stays where it was
             reached = (sx, sy, previous[2]) if two_axes else (sx, sy, sz)
             if placed:
@@ -305,6 +330,8 @@ class FastLinear:
                     text = g_words.get(g_code) or self._g_word(formatter, g_code)
                     printed, punched = text.printed, text.punched
                 else:
+                    if command is None:
+                        continue
                     if suppress_f and command == words.previous_f:
                         continue
                     words.previous_f = command
@@ -324,9 +351,11 @@ class FastLinear:
             cells = block.cells
             cells[1] = float(sequence)
             cells[2] = g_code
-            cells[11] = command
+            if command is not None:
+                cells[11] = command
             cells[15] = 0.0
             cells[19] = ipm
+            block.rapid = rapid
             for location, _, axis, sign, factor, _, _, _ in slots:
                 if axis >= 0 and moved[axis]:
                     cells[location] = sign * (values[axis] * step) * factor
