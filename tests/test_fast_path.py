@@ -168,3 +168,28 @@ def test_whole_step_words_agree_with_the_register_formatter(
             _units_text(formatter)(units, negative)
         return
     assert _units_text(formatter)(units, negative) == (expected.printed, expected.punched)
+
+
+@pytest.mark.parametrize("machine", MACHINES)
+def test_the_fast_g_code_choice_is_selg(machine: str) -> None:
+    """Bisection over the range limits picks SELG's code for every size up to DEPMAX."""
+    from gecent.core.motion.fastpath import _selector
+    from gecent.core.motion.gcode import LinearCodes
+    from gecent.core.plugins import get_plugins
+
+    pack = get_plugins().machine(machine)
+    assert pack is not None
+    definition = pack.load()
+    codes = LinearCodes(definition, definition.number_option(14))
+    select = _selector(codes)
+    sizes = {1, codes.depmax}
+    for limit in codes.limits:
+        sizes |= {int(limit) - 1, int(limit), int(limit) + 1}
+    def outcome(choose, size: int) -> object:  # type: ignore[no-untyped-def]
+        try:
+            return choose(size)
+        except Exception as exc:  # the manual's fatal error 138, alike
+            return str(exc)
+
+    for size in sorted(s for s in sizes if 0 < s <= codes.depmax):
+        assert outcome(select, size) == outcome(codes.select, size), size

@@ -18,7 +18,7 @@ from gecent.core.errors import NotYetSupported
 from gecent.core.feed.magic3 import decode, magic3
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.motion.gcode import LINEAR_RANGES
-from gecent.core.motion.rounding import half_up
+from gecent.core.motion.rounding import half_up, half_up_float
 
 # (option 10, TABLEG location of the dimension code) -> (REGFOR(11), FCOMIN, FCOMAX); the
 # manual names the codes G12/G11/G01/G10/G23/G26, locations 13/12/2/11/14/15 (001 L11113-11146;
@@ -117,8 +117,8 @@ class FeedCommand:
         elif command < self.minimum:
             command = self.minimum
         else:
-            return float(half_up(command, self.decimals)), ipm
-        return float(half_up(command, self.decimals)), command * length / gdimul
+            return half_up_float(command, self.decimals), ipm
+        return half_up_float(command, self.decimals), command * length / gdimul
 
 
 class RapidCommand:

@@ -18,11 +18,13 @@ tapes and listings.
 
 from __future__ import annotations
 
+from bisect import bisect_right
 from collections.abc import Callable
 from math import isclose, log10
 
 from gecent.core.absent import ABSENT
 from gecent.core.cl.records import Motion
+from gecent.core.motion.gcode import DimensionCode, LinearCodes
 from gecent.core.motion.guard import CoordinateGuard
 from gecent.core.motion.linear import LinearMotion
 from gecent.core.output.block import Block, Code
@@ -165,7 +167,7 @@ class FastLinear:
         reach_x, reach_y, reach_z = self.reach
         depmax = self.depmax
         two_axes = self.axes == 2
-        select = output.linear_codes.select
+        select = _selector(output.linear_codes)
         feed_command = output.feed.command
         rapid_command = output.rapid.command
         rapid_motion = self.rapid_motion
@@ -437,3 +439,21 @@ def _units_text(formatter: RegisterFormatter) -> Callable[[int, bool], tuple[str
         return printed, punched
 
     return classic
+
+
+def _selector(codes: LinearCodes) -> Callable[[int], DimensionCode]:
+    """SELG by bisection over the range limits, each range's code worked out once (the
+    smallest available range from it up); the general ``select`` where the limits are not
+    ascending or no code covers the size (it raises the manual's fatal error)."""
+    limits = codes.limits
+    if list(limits) != sorted(limits):
+        return codes.select
+    covering: list[DimensionCode | None] = []
+    for index in range(len(limits) + 1):
+        covering.append(next((c for c in codes.codes[index:] if c is not None), None))
+
+    def select(largest: int) -> DimensionCode:
+        code = covering[bisect_right(limits, largest)]
+        return code if code is not None else codes.select(largest)
+
+    return select

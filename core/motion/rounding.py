@@ -27,3 +27,23 @@ def half_up(value: float, decimals: int) -> Decimal:
     """``value`` rounded half-up to ``decimals`` places, exactly (Python's round() is
     half-even): register formats and feed commands round so."""
     return Decimal(repr(value)).quantize(Decimal(1).scaleb(-decimals), ROUND_HALF_UP)
+
+
+# a scaled value within this of a half is left to Decimal; elsewhere float decides alike
+_TIE_MARGIN = 1e-4
+_FLOAT_EXACT = 1e11  # below this, x * 10**d errs by far less than the margin
+
+
+def half_up_float(value: float, decimals: int) -> float:
+    """``float(half_up(value, decimals))``, without Decimal where float arithmetic decides
+    the same (away from a half, for values whose scaled size float holds exactly enough);
+    ``tests/test_rounding.py`` checks the two agree."""
+    if value >= 0.0:
+        power: int = 10**decimals
+        scaled = value * power
+        if scaled < _FLOAT_EXACT:
+            whole = int(scaled)
+            fraction = scaled - whole
+            if abs(fraction - 0.5) > _TIE_MARGIN:
+                return (whole + (1 if fraction > 0.5 else 0)) / power
+    return float(half_up(value, decimals))
