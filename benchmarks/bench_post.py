@@ -17,11 +17,11 @@ import tempfile
 import time
 from pathlib import Path
 
+from gecent.core.dispatch.post import post
 from gecent.core.output.marks import stand_in
 from gecent.core.output.punch import punch
 from gecent.core.output.tape import tape_image
 from gecent.core.plugins import get_plugins
-from gecent.core.run import post
 
 ROUGHING = Path(__file__).resolve().parent.parent.parent / "shared/corpus/creo/schruppen_1.ncl.1"
 

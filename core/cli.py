@@ -11,36 +11,26 @@ import threading
 from collections.abc import Callable, Iterable, Iterator
 from functools import wraps
 from pathlib import Path
-from typing import IO, TYPE_CHECKING, Any, TypeVar
+from typing import TYPE_CHECKING, Any, TypeVar
 
 import click
 from gecent.core import __version__
 from gecent.core.cl.records import Record
 from gecent.core.cl.stream import read_cl
+from gecent.core.dispatch.post import post as run_post
 from gecent.core.errors import (
     EXIT_INTERNAL,
     Diagnostic,
     GecentError,
     InputError,
-    NotYetSupported,
 )
 from gecent.core.families import FAMILIES, MachinePack
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.motion.guard import DEFAULT_MAX_SEGMENTS
 from gecent.core.output.files import write_atomically
-from gecent.core.output.marks import stand_in
 from gecent.core.output.modern import modern_output
-from gecent.core.output.punch import Puncher
-from gecent.core.output.sinks import (
-    Ending,
-    JsonSink,
-    ListingSink,
-    PunchSink,
-    Sinks,
-    TapeSink,
-)
+from gecent.core.output.sinks import Sinks, output_sinks
 from gecent.core.plugins import PluginSet, get_plugins
-from gecent.core.run import post as run_post
 
 if TYPE_CHECKING:
     from gecent.core.cl.binary_layout import Layout
@@ -278,7 +268,7 @@ def post(
         listing = listing_path
         if listing is None and not modern_output(machine):
             listing = str(tape_target.with_suffix(".lis"))
-        return _output_sinks(
+        return output_sinks(
             plugins, machine, tape_target, listing, punch_to, sys.stdout if as_json else None
         )
 
@@ -306,41 +296,6 @@ def _terminate_cleanly() -> None:
 
     if threading.current_thread() is threading.main_thread():
         signal.signal(signal.SIGTERM, stop)
-
-
-def _output_sinks(
-    plugins: PluginSet,
-    machine: MachineDefinition,
-    tape: Path,
-    listing: str | None,
-    punch_to: tuple[str, str] | None,
-    json_stream: IO[str] | None,
-) -> Sinks:
-    """The run's outputs: what can be refused (the printout, the tape code) is looked at
-    before any file is opened."""
-    sinks = Sinks()
-    writer = None
-    if listing is not None:
-        layout = int(machine.number_option(164))
-        printout = plugins.get("printouts", layout)
-        if printout is None:
-            raise NotYetSupported(f"printout GEOUT{layout} (option 164 = {layout})")
-        writer = printout.listing(machine, lambda: sinks.partno)
-    puncher = (
-        Puncher(punch_to[0], stand_in(machine, 64), stand_in(machine, 65)) if punch_to else None
-    )
-    try:
-        sinks.add(TapeSink(tape))
-        if writer is not None and listing is not None:
-            sinks.add(ListingSink(listing, writer))
-        if puncher is not None and punch_to is not None:
-            sinks.add(PunchSink(punch_to[1], puncher))
-        if json_stream is not None:
-            sinks.add(JsonSink(json_stream, machine))
-    except BaseException:
-        sinks.close(Ending(False))
-        raise
-    return sinks
 
 
 def _progress(input_path: str) -> Callable[[Iterator[Record]], Iterator[Record]] | None:

@@ -13,11 +13,14 @@ from dataclasses import dataclass, field
 from functools import cache
 from importlib.metadata import EntryPoint, entry_points
 from types import ModuleType
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import pluggy
 from gecent.core import hookspecs
-from gecent.core.families import FAMILIES, FamilySpec, MachinePack
+from gecent.core.families import FAMILIES, FamilySpec, HookPoint, Macfun, MacfunHandler, MachinePack
+
+if TYPE_CHECKING:
+    from gecent.core.machine.definition import MachineDefinition
 
 GROUP = "gecent"
 
@@ -218,3 +221,16 @@ def get_plugins() -> PluginSet:
     """All plugins installed in this environment (loaded once per process)."""
     modules, failures = _entry_point_modules()
     return build_plugin_set(modules, failures)
+
+
+def macfun_handler(
+    plugins: PluginSet, machine: MachineDefinition, point: HookPoint
+) -> MacfunHandler | None:
+    """The machine's own MACFUN code for a hook point (option 133 = 1), or None."""
+    if machine.number_option(133) != 1:
+        return None
+    for info in plugins.family("macfuns").values():
+        macfun: Macfun = info.obj
+        if macfun.machine == machine.name and point in macfun.handlers:
+            return macfun.handlers[point]
+    return None

@@ -22,7 +22,6 @@ from gecent.core.cl.records import (
     Statement,
     Surface,
 )
-from gecent.core.cl.stream import read_cl
 from gecent.core.cl.vocabulary import vocabulary
 from gecent.core.dump import state_dump
 from gecent.core.errors import (
@@ -34,14 +33,9 @@ from gecent.core.errors import (
     RunStopped,
     SourcePosition,
 )
-from gecent.core.families import HookPoint, Macfun, MacfunHandler
 from gecent.core.feed.positioning import FeedType
 from gecent.core.feed.rapid import MODAL, RapidTraverse
 from gecent.core.machine.definition import MachineDefinition
-from gecent.core.machine.selection import (
-    first_machin,
-    resolve_machine,
-)
 from gecent.core.motion.circle import CircularMotion
 from gecent.core.motion.control_cycles import ControlCycles
 from gecent.core.motion.cycles import Cycle, cycle_legs
@@ -55,7 +49,7 @@ from gecent.core.output.block import Block, Code
 from gecent.core.output.element import OutputElement
 from gecent.core.output.format import FormatOverflow
 from gecent.core.output.sinks import CollectSink, Ending, Sinks
-from gecent.core.plugins import PluginSet, get_plugins
+from gecent.core.plugins import PluginSet, get_plugins, macfun_handler
 from gecent.core.reinstate import restat
 from gecent.core.spindle import SpindleElement
 from gecent.core.state import PostState, RunResult
@@ -500,50 +494,7 @@ class Run:
             tolerances.ball = abs(corner - tolerances.cutter_radius) < 1e-6
 
 
-def macfun_handler(
-    plugins: PluginSet, machine: MachineDefinition, point: HookPoint
-) -> MacfunHandler | None:
-    """The machine's own MACFUN code for a hook point (option 133 = 1), or None."""
-    if machine.number_option(133) != 1:
-        return None
-    for info in plugins.family("macfuns").values():
-        macfun: Macfun = info.obj
-        if macfun.machine == machine.name and point in macfun.handlers:
-            return macfun.handlers[point]
-    return None
-
-
 AFTER_END = "END OR RESET HAS NOT BEEN FOLLOWED BY A FROM POINT."  # comment 47 (L34080)
 UNKNOWN_WORD = "IS NOT A GECENT III POSTPROCESSOR WORD; STATEMENT DISREGARDED"
 
 _TYPE_NAMES = {"MOTION": "5000", "CIRCLE": "3000", "ARELEM": "6000", "MULTIAX": "9000"}
-
-
-def post(
-    path: str,
-    plugins: PluginSet,
-    machine_override: str | MachineDefinition | None = None,
-    watch: Callable[[Iterator[Record]], Iterator[Record]] | None = None,
-    sinks: Callable[[MachineDefinition], Sinks] | None = None,
-    report: Callable[[Diagnostic], None] | None = None,
-    max_segments: int = DEFAULT_MAX_SEGMENTS,
-    fast: bool = True,
-) -> RunResult:
-    """Select the machine (first pass up to MACHIN, as GEINIT does), then process the file;
-    ``watch`` may wrap the records of the main pass (a progress bar). ``sinks`` makes the
-    outputs for the machine chosen (none: the result keeps the blocks); ``report`` gets
-    each warning as it is made (none: the result keeps them)."""
-    request, notes = first_machin(read_cl(path, plugins))
-    machine = resolve_machine(plugins, machine_override, request)
-    run = Run(
-        machine,
-        plugins,
-        sinks(machine) if sinks is not None else None,
-        report,
-        max_segments,
-        fast,
-    )
-    for note in notes:
-        run.warn(note)
-    records = read_cl(path, plugins)
-    return run.process(watch(records) if watch is not None else records)

@@ -14,12 +14,12 @@ from click.testing import CliRunner
 from gecent.core.cl.records import Motion, MotionSubtype, Statement
 from gecent.core.cl.stream import read_cl
 from gecent.core.cli import main
+from gecent.core.dispatch.post import post
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.motion.rounding import to_steps
 from gecent.core.output.block import Code
 from gecent.core.output.punch import unpunch
 from gecent.core.plugins import get_plugins
-from gecent.core.run import post
 
 from .conftest import SHARED
 from .test_post_linear import decode

@@ -7,12 +7,12 @@ from __future__ import annotations
 import pytest
 from gecent.core.cl.apt_source import AptSourceReader
 from gecent.core.cl.records import Statement
+from gecent.core.dispatch.post import post as post_file
 from gecent.core.errors import InputError, NotYetSupported
 from gecent.core.machine.loader import load_machine_text
 from gecent.core.motion.cycles import Cycle, cycle_legs, parse_cycle
 from gecent.core.output.tape import tape_lines
 from gecent.core.plugins import get_plugins
-from gecent.core.run import post as post_file
 
 from .conftest import SHARED
 from .test_post_linear import post

@@ -28,10 +28,11 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from gecent.core.dispatch.post import post
 from gecent.core.output.block import Code
 from gecent.core.output.tape import tape_lines
 from gecent.core.plugins import get_plugins
-from gecent.core.run import RunResult, post
+from gecent.core.state import RunResult
 
 EXAMPLE = Path(__file__).resolve().parents[1] / "examples" / "drill_mach24.apt"
 

@@ -6,10 +6,10 @@ from pathlib import Path
 
 import pytest
 from gecent.core.cl.records import Statement, Word
+from gecent.core.dispatch.post import post
 from gecent.core.errors import FatalError, InputError, NotYetSupported
 from gecent.core.machine.selection import apply_machin_options, parse_machin, resolve_machine
 from gecent.core.plugins import PluginSet, get_plugins
-from gecent.core.run import post
 
 
 def machin(*args: object) -> Statement:

@@ -6,12 +6,12 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
+from gecent.core.dispatch.post import post
 from gecent.core.machine.regformat import decode_regfor
 from gecent.core.output.format import RegisterFormatter
 from gecent.core.output.modern import machine_planes
 from gecent.core.output.tape import tape_lines
 from gecent.core.plugins import PluginSet
-from gecent.core.run import post
 
 from .conftest import ROOT
 

@@ -14,9 +14,9 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
+from gecent.core.dispatch.post import post
 from gecent.core.output.tape import tape_lines
 from gecent.core.plugins import get_plugins
-from gecent.core.run import post
 
 EXAMPLES = Path(__file__).resolve().parent.parent / "examples"
 

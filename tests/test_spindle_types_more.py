@@ -8,6 +8,7 @@ from pathlib import Path
 
 import pytest
 from gecent.core.cl.apt_source import AptSourceReader
+from gecent.core.dispatch.post import post as post_file
 from gecent.core.errors import MachineDefinitionError
 from gecent.core.families import HookPoint, HookResult, Macfun
 from gecent.core.feed.magic3 import magic3
@@ -18,7 +19,6 @@ from gecent.core.output.block import Code
 from gecent.core.output.tape import tape_lines
 from gecent.core.plugins import get_plugins, load_module_plugins
 from gecent.core.run import Run
-from gecent.core.run import post as post_file
 from gecent.core.spindle_macfun import SpindleCodeContext
 from gecent.core.spindle_types import (
     CCLW,

@@ -10,9 +10,9 @@ from pathlib import Path
 import pytest
 from click.testing import CliRunner
 from gecent.core.cli import main
+from gecent.core.dispatch.post import post
 from gecent.core.output.punch import punch, unpunch
 from gecent.core.output.sinks import CollectSink, Ending, Sinks, TapeSink
-from gecent.core.run import post
 
 from .conftest import ROOT
 

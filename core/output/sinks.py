@@ -18,13 +18,15 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import IO, Protocol
 
-from gecent.core.errors import GecentError
+from gecent.core.errors import GecentError, NotYetSupported
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.output.block import Block
 from gecent.core.output.files import AtomicFile
 from gecent.core.output.jsonlines import block_record
+from gecent.core.output.marks import stand_in
 from gecent.core.output.punch import Puncher
 from gecent.core.output.tape import tape_line
+from gecent.core.plugins import PluginSet
 
 
 @dataclass(slots=True)
@@ -54,18 +56,19 @@ class ListingWriter(Protocol):
     def finish(self) -> str: ...
 
 
-class TapeSink:
-    """The tape image: one line per punched block, written as it comes."""
+class LineSink:
+    """A sink of tape lines (the tape image, the punched tape): the fast path hands it the
+    line alone; written only when the run finishes with the punch not suppressed."""
 
     def __init__(self, path: str | Path) -> None:
         self.file = AtomicFile(path)
 
     def block(self, block: Block, line: str | None) -> None:
         if line is not None:
-            self.file.write((line + "\n").encode("ascii", "replace"))
+            self.line(line)
 
     def line(self, line: str) -> None:
-        self.file.write((line + "\n").encode("ascii", "replace"))
+        raise NotImplementedError
 
     def close(self, ending: Ending) -> None:
         if ending.ok and not ending.punch_suppressed:
@@ -74,16 +77,19 @@ class TapeSink:
             self.file.discard()
 
 
-class PunchSink:
+class TapeSink(LineSink):
+    """The tape image: one line per punched block, written as it comes."""
+
+    def line(self, line: str) -> None:
+        self.file.write((line + "\n").encode("ascii", "replace"))
+
+
+class PunchSink(LineSink):
     """The punched tape in EIA RS-244 or ASCII RS-358 code, frame by frame."""
 
     def __init__(self, path: str | Path, puncher: Puncher) -> None:
         self.puncher = puncher
-        self.file = AtomicFile(path)
-
-    def block(self, block: Block, line: str | None) -> None:
-        if line is not None:
-            self.line(line)
+        super().__init__(path)
 
     def line(self, line: str) -> None:
         frames_of = self.puncher.frames_of
@@ -92,12 +98,6 @@ class PunchSink:
         else:  # an empty line (a blank card) or a text holding line breaks: as the image reads
             for part in (line + "\n").splitlines():
                 self.file.write(frames_of(part))
-
-    def close(self, ending: Ending) -> None:
-        if ending.ok and not ending.punch_suppressed:
-            self.file.commit()
-        else:
-            self.file.discard()
 
 
 class ListingSink:
@@ -170,7 +170,7 @@ class Sinks:
     @property
     def lines_only(self) -> bool:
         """Every sink takes tape lines alone (tape, punch): the fast path makes no Block."""
-        return all(isinstance(sink, TapeSink | PunchSink) for sink in self.sinks)
+        return all(isinstance(sink, LineSink) for sink in self.sinks)
 
     def _emit(self, block: Block) -> None:
         line = tape_line(block)
@@ -185,7 +185,7 @@ class Sinks:
     def emit_line(self, line: str) -> None:
         """A tape line alone, when :attr:`lines_only`."""
         for sink in self.sinks:
-            sink.line(line)  # type: ignore[attr-defined]
+            sink.line(line)  # type: ignore[attr-defined]  # lines_only: every sink a LineSink
 
     def close(self, ending: Ending) -> None:
         """Close every sink, even when one fails; the first failure is raised after."""
@@ -200,3 +200,39 @@ class Sinks:
                 failure = failure or exc
         if failure is not None:
             raise failure
+
+
+def output_sinks(
+    plugins: PluginSet,
+    machine: MachineDefinition,
+    tape: Path,
+    listing: str | None,
+    punch_to: tuple[str, str] | None,
+    json_stream: IO[str] | None,
+) -> Sinks:
+    """The outputs of ``gecent post``: the tape, and the listing, punch and JSON lines when
+    asked; what can be refused (the printout, the tape code) is looked at before any file
+    is opened, and a failure on the way closes what was opened."""
+    sinks = Sinks()
+    writer = None
+    if listing is not None:
+        layout = int(machine.number_option(164))
+        printout = plugins.get("printouts", layout)
+        if printout is None:
+            raise NotYetSupported(f"printout GEOUT{layout} (option 164 = {layout})")
+        writer = printout.listing(machine, lambda: sinks.partno)
+    puncher = (
+        Puncher(punch_to[0], stand_in(machine, 64), stand_in(machine, 65)) if punch_to else None
+    )
+    try:
+        sinks.add(TapeSink(tape))
+        if writer is not None and listing is not None:
+            sinks.add(ListingSink(listing, writer))
+        if puncher is not None and punch_to is not None:
+            sinks.add(PunchSink(punch_to[1], puncher))
+        if json_stream is not None:
+            sinks.add(JsonSink(json_stream, machine))
+    except BaseException:
+        sinks.close(Ending(False))
+        raise
+    return sinks

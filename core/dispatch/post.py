@@ -1,0 +1,47 @@
+"""Posting a CL file: the first pass chooses the machine (as GEINIT does, up to MACHIN),
+the main pass runs every record through a :class:`~gecent.core.run.Run` into the sinks."""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterator
+
+from gecent.core.cl.records import Record
+from gecent.core.cl.stream import read_cl
+from gecent.core.errors import Diagnostic
+from gecent.core.machine.definition import MachineDefinition
+from gecent.core.machine.selection import first_machin, resolve_machine
+from gecent.core.motion.guard import DEFAULT_MAX_SEGMENTS
+from gecent.core.output.sinks import Sinks
+from gecent.core.plugins import PluginSet
+from gecent.core.run import Run
+from gecent.core.state import RunResult
+
+
+def post(
+    path: str,
+    plugins: PluginSet,
+    machine_override: str | MachineDefinition | None = None,
+    watch: Callable[[Iterator[Record]], Iterator[Record]] | None = None,
+    sinks: Callable[[MachineDefinition], Sinks] | None = None,
+    report: Callable[[Diagnostic], None] | None = None,
+    max_segments: int = DEFAULT_MAX_SEGMENTS,
+    fast: bool = True,
+) -> RunResult:
+    """Select the machine (first pass up to MACHIN, as GEINIT does), then process the file;
+    ``watch`` may wrap the records of the main pass (a progress bar). ``sinks`` makes the
+    outputs for the machine chosen (none: the result keeps the blocks); ``report`` gets
+    each warning as it is made (none: the result keeps them)."""
+    request, notes = first_machin(read_cl(path, plugins))
+    machine = resolve_machine(plugins, machine_override, request)
+    run = Run(
+        machine,
+        plugins,
+        sinks(machine) if sinks is not None else None,
+        report,
+        max_segments,
+        fast,
+    )
+    for note in notes:
+        run.warn(note)
+    records = read_cl(path, plugins)
+    return run.process(watch(records) if watch is not None else records)
