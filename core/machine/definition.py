@@ -70,7 +70,12 @@ class MachineDefinition:
         return self.options[catalogue().option_number(key)]
 
     def number_option(self, key: int | str) -> float:
-        value = self.option(key)
+        """A numeric option's value by number or alias (a number indexes the tuple directly:
+        the kernel asks by number in its loops)."""
+        if type(key) is int and 0 < key < len(self.options):
+            value = self.options[key]
+        else:
+            value = self.option(key)
         if isinstance(value, str):
             raise TypeError(f"option {key} holds text {value!r}, not a number")
         return value
