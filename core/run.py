@@ -232,7 +232,12 @@ class Run:
         try:
             result = self._process(records)
         except FormatOverflow as overflow:
-            if overflow.where is not None:  # the element knows the record, the run the file
+            record = self._record
+            if record is not None and (
+                overflow.where is None or overflow.where.record == record.number
+            ):
+                overflow.where = record.where  # the record being posted: its file and line
+            elif overflow.where is not None:  # the element knows the record, the run the file
                 overflow.where = SourcePosition(self._file, None, None, overflow.where.record)
             self._stopped_by(overflow)
             raise

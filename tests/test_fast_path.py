@@ -193,3 +193,18 @@ def test_the_fast_g_code_choice_is_selg(machine: str) -> None:
 
     for size in sorted(s for s in sizes if 0 < s <= codes.depmax):
         assert outcome(select, size) == outcome(codes.select, size), size
+
+
+def test_a_register_overflow_is_reported_alike_by_both_paths(tmp_path: Path) -> None:
+    """A machine whose X holds less than its option 4: the fast path's overflow names the
+    record's file and line as the general path's does, and both keep the listing's dump."""
+    machine = tmp_path / "small-x.toml"
+    machine.write_text(
+        '[machine]\nname = "small-x"\ntitle = "SMALL X"\n[regfor]\n3 = -12.0\n[optab]\n4 = 99.0\n'
+    )
+    source = tmp_path / "p.apt"
+    source.write_text("FROM/0,0,0\nFEDRAT/10\nGOTO/1,0,0\nGOTO/10.9951,0,0\nFINI\n")
+    _same(source, str(machine), tmp_path)
+    general = _post(source, str(machine), tmp_path / "again", False)
+    assert general["exit"] == 1
+    assert f"{source}:4 (record 4): error: X9.9951 does not fit" in str(general["stderr"])
