@@ -288,14 +288,14 @@ class Run:
             if self.finished:
                 raise InputError("record after FINI", record.where)
             state.sequence = record.number
-            record = units.record(record)
             if type(record) is Motion and record.subtype is goto:
                 circle = self._circle
                 if fast is None and circle is not None and circle.collecting:
                     circle.finish()  # a GOTO ends the arc before it, as any record does
                     fast = self._fast_path()
-                if fast is not None and fast.goto(record):
+                if fast is not None and fast.goto(record):  # (it applies UNITS itself)
                     continue
+            record = units.record(record)
             fast = None  # the general path: the conditions are looked at again after it
             self._general(record)
             fast = self._fast_path()
@@ -313,7 +313,13 @@ class Run:
                 self._guard = CoordinateGuard(self.machine, self.output.words.shuffle)
             rapid = self.rapid
             fast = self._fast = FastLinear(
-                self.state, self.output, self.motion, self.sinks, self._guard, rapid.motion
+                self.state,
+                self.output,
+                self.motion,
+                self.sinks,
+                self._guard,
+                rapid.motion,
+                self.units,
             )
             if not fast.possible:
                 self.use_fast_path = False

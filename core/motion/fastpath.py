@@ -33,6 +33,7 @@ from gecent.core.output.format import Formatted, RegisterFormatter
 from gecent.core.output.sinks import Sinks
 from gecent.core.output.words import ZERO_RULE_CELLS
 from gecent.core.state import PostState
+from gecent.core.units import UnitScale
 
 # a register whose last decimal is the machine step formats whole steps without floats,
 # exactly as from the value, while the step count stays well inside a float's precision
@@ -51,6 +52,7 @@ class FastLinear:
         sinks: Sinks,
         guard: CoordinateGuard,
         rapid_motion: Callable[[float], None],
+        units: UnitScale,
     ) -> None:
         machine = state.machine
         self.state = state
@@ -58,6 +60,7 @@ class FastLinear:
         self.motion = motion
         self.sinks = sinks
         self.rapid_motion = rapid_motion  # TSTFLG: enter or leave rapid before a move
+        self.units = units  # UNITS: the record comes unscaled (x 1.0 changes no float)
         self.step = motion.step
         self.axes = motion.axes
         self.depmax = motion.depmax
@@ -164,6 +167,7 @@ class FastLinear:
         feed = state.feed
         pending = state.pending
         step = self.step
+        units = self.units
         reach_x, reach_y, reach_z = self.reach
         depmax = self.depmax
         two_axes = self.axes == 2
@@ -200,9 +204,10 @@ class FastLinear:
             if len(point) != 3:
                 return False
             tx, ty, tz = position.translation
-            px = point[0] + tx
-            py = point[1] + ty
-            pz = point[2] + tz
+            scale_units = units.factor
+            px = point[0] * scale_units + tx
+            py = point[1] * scale_units + ty
+            pz = point[2] * scale_units + tz
             # "not <=" also refuses NaN: the general path reports it
             if not (abs(px) <= reach_x and abs(py) <= reach_y and abs(pz) <= reach_z):
                 return False
@@ -304,8 +309,8 @@ class FastLinear:
                     steps = values[axis]
                     if scale is not None and -EXACT_UNITS < steps < EXACT_UNITS:
                         negative = steps < 0 if sign > 0 else steps > 0
-                        units = (steps if steps >= 0 else -steps) * factor * scale
-                        printed, punched = text_of(units, negative)
+                        magnitude = (steps if steps >= 0 else -steps) * factor * scale
+                        printed, punched = text_of(magnitude, negative)
                     else:
                         text = formatter.format(sign * (steps * step) * factor)
                         printed, punched = text.printed, text.punched
