@@ -17,7 +17,7 @@ The reader is a generator: memory does not grow with the file.
 from __future__ import annotations
 
 import re
-from collections.abc import Callable, Iterable, Iterator
+from collections.abc import Iterable, Iterator
 
 from gecent.core.cl.records import (
     Arelem,
@@ -57,7 +57,6 @@ _MAJOR = re.compile(r"\s*((?:[A-Za-z]|\d+[A-Za-z])[A-Za-z0-9_]*)")
 _ONE_LINE_GOTO = re.compile(
     rf"\s*GOTO\s*/({_NUMBER_ITEM}),({_NUMBER_ITEM}),({_NUMBER_ITEM})[\r\n]*\Z"
 )
-GotoLine = tuple[int, tuple[float, float, float]]
 
 
 class _Line:
@@ -83,60 +82,6 @@ class _Line:
         return SourcePosition(file, line, column + offset - start)
 
 
-def _logical_lines(
-    lines: Iterable[str], fast: Callable[[], bool] = lambda: False
-) -> Iterator[tuple[str, _Line | GotoLine]]:
-    """Yield ("statement" | "comment", logical line) with continuations joined, or, while
-    ``fast()`` holds, ("goto", (line, point)) for a one-line GOTO of three numbers."""
-    pending: _Line | None = None
-    pending_kind = "statement"
-    one_line_goto = _ONE_LINE_GOTO.match
-    for number, raw in enumerate(lines, start=1):
-        if pending is None and (found := one_line_goto(raw)) is not None and fast():
-            x, y, z = found.groups()
-            yield "goto", (number, (float(x), float(y), float(z)))
-            continue
-        line = raw.rstrip("\r\n")
-        if pending is not None and pending_kind == "comment":
-            stripped = line.rstrip()
-            continues = stripped.endswith("$") and not stripped.endswith("$$")
-            pending.add(" " + (stripped[:-1] if continues else stripped).strip(), number, 1)
-            if not continues:
-                yield "comment", pending
-                pending = None
-            continue
-        comment_at = line.find("$$")
-        head = line if comment_at < 0 else line[:comment_at]
-        if pending is None and not head.strip():
-            if comment_at >= 0:
-                comment = _Line(number)
-                body = line[comment_at + 2 :].rstrip()
-                if body.endswith("$") and not body.endswith("$$"):
-                    comment.add(body[:-1].rstrip(), number, comment_at + 3)
-                    pending, pending_kind = comment, "comment"
-                else:
-                    comment.add(body, number, comment_at + 3)
-                    yield "comment", comment
-            continue
-        if pending is None:
-            pending, pending_kind = _Line(number), "statement"
-        stripped = head.rstrip()
-        first_word = _MAJOR.match(pending.text or stripped)
-        is_text = first_word is not None and first_word.group(1).upper() in TEXT_MAJORS
-        if not is_text and stripped.endswith("$"):
-            pending.add(stripped[:-1], number, 1)
-            continue
-        pending.add(line.rstrip() if is_text else stripped, number, 1)
-        yield "statement", pending
-        pending = None
-        if comment_at >= 0 and not is_text:
-            trailing = _Line(number)
-            trailing.add(line[comment_at + 2 :].rstrip(), number, comment_at + 3)
-            yield "comment", trailing
-    if pending is not None:
-        yield pending_kind, pending
-
-
 class AptSourceReader:
     """Parse one APT source CL file into records."""
 
@@ -147,21 +92,69 @@ class AptSourceReader:
         self._vocabulary = vocabulary()
 
     def read_lines(self, lines: Iterable[str]) -> Iterator[Record]:
+        """The records of the lines, continuations joined; a whole one-line GOTO of three
+        numbers (no continuation, no comment, not under MULTAX) is read straight off."""
         file = self.file
         goto = MotionSubtype.GOTO
-        for kind, logical in _logical_lines(lines, lambda: not self.multiax):
-            if isinstance(logical, tuple):
-                line, point = logical
+        one_line_goto = _ONE_LINE_GOTO.match
+        pending: _Line | None = None
+        pending_kind = "statement"
+        for number, raw in enumerate(lines, start=1):
+            if pending is None and (found := one_line_goto(raw)) is not None and not self.multiax:
+                x, y, z = found.groups()
                 self.number += 1
-                yield Motion(file, line, self.number, goto, (point,))
+                yield Motion(file, number, self.number, goto, ((float(x), float(y), float(z)),))
                 continue
-            if kind == "comment":
-                self.number += 1
-                yield Comment(self.file, logical.line, self.number, logical.text.strip())
+            line = raw.rstrip("\r\n")
+            if pending is not None and pending_kind == "comment":
+                stripped = line.rstrip()
+                continues = stripped.endswith("$") and not stripped.endswith("$$")
+                pending.add(" " + (stripped[:-1] if continues else stripped).strip(), number, 1)
+                if not continues:
+                    yield self._comment(pending)
+                    pending = None
                 continue
-            record = self._statement(logical)
+            comment_at = line.find("$$")
+            head = line if comment_at < 0 else line[:comment_at]
+            if pending is None and not head.strip():
+                if comment_at >= 0:
+                    comment = _Line(number)
+                    body = line[comment_at + 2 :].rstrip()
+                    if body.endswith("$") and not body.endswith("$$"):
+                        comment.add(body[:-1].rstrip(), number, comment_at + 3)
+                        pending, pending_kind = comment, "comment"
+                    else:
+                        comment.add(body, number, comment_at + 3)
+                        yield self._comment(comment)
+                continue
+            if pending is None:
+                pending, pending_kind = _Line(number), "statement"
+            stripped = head.rstrip()
+            first_word = _MAJOR.match(pending.text or stripped)
+            is_text = first_word is not None and first_word.group(1).upper() in TEXT_MAJORS
+            if not is_text and stripped.endswith("$"):
+                pending.add(stripped[:-1], number, 1)
+                continue
+            pending.add(line.rstrip() if is_text else stripped, number, 1)
+            record = self._statement(pending)
             if record is not None:
                 yield record
+            pending = None
+            if comment_at >= 0 and not is_text:
+                trailing = _Line(number)
+                trailing.add(line[comment_at + 2 :].rstrip(), number, comment_at + 3)
+                yield self._comment(trailing)
+        if pending is not None:
+            if pending_kind == "comment":
+                yield self._comment(pending)
+            else:
+                record = self._statement(pending)
+                if record is not None:
+                    yield record
+
+    def _comment(self, logical: _Line) -> Comment:
+        self.number += 1
+        return Comment(self.file, logical.line, self.number, logical.text.strip())
 
     def _error(self, logical: _Line, offset: int, message: str) -> InputError:
         return InputError(message, logical.position(self.file, offset))

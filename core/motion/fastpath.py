@@ -321,7 +321,8 @@ class FastLinear:
                     ):
                         if zero_rule == 0:
                             continue
-                        printed_words.append((location, printed))
+                        if blocks_wanted:
+                            printed_words.append((location, printed))
                         punched_words.append(letter)
                         continue
                 elif location == 1:
@@ -346,7 +347,8 @@ class FastLinear:
                         formatter = f_formatter(f_format)
                     text = formatter.format(command)
                     printed, punched = text.printed, text.punched
-                printed_words.append((location, printed))
+                if blocks_wanted:  # the listing and JSON lines print the words
+                    printed_words.append((location, printed))
                 punched_words.append(letter + punched)
             line = separator.join(punched_words)
             previous_part[:] = present_part
