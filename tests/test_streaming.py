@@ -230,3 +230,26 @@ def test_memory_does_not_grow_with_the_input(tmp_path: Path) -> None:
     small = _peak_bytes(tmp_path, 150)
     large = _peak_bytes(tmp_path, 1500)
     assert large < small * 1.25, (small, large)
+
+
+def test_a_json_reader_that_goes_away_ends_the_json_not_the_post(tmp_path: Path) -> None:
+    """`gecent post --json | head -1`: the tape is still written whole, exit 0."""
+    import subprocess
+    import sys
+
+    moves = [f"GOTO/{i % 50},{i % 7},0" for i in range(6000)]
+    source = tmp_path / "long.apt"
+    source.write_text("\n".join(["MACHIN/GECENT,23", "FEDRAT/20", *moves, "FINI"]) + "\n")
+    tape = tmp_path / "long.tape"
+    command = [sys.executable, "-m", "gecent.core.cli", "post", str(source), "-o", str(tape)]
+    process = subprocess.Popen(
+        [*command, "--json"], stdout=subprocess.PIPE, stderr=subprocess.PIPE
+    )
+    assert process.stdout is not None
+    assert process.stdout.readline().startswith(b"{")
+    process.stdout.close()  # the reader goes away with megabytes still to come
+    _, err = process.communicate(timeout=120)
+    assert process.returncode == 0, err
+    whole = subprocess.run([*command[:-2], "-o", str(tmp_path / "whole.tape")], check=True)
+    assert whole.returncode == 0
+    assert tape.read_bytes() == (tmp_path / "whole.tape").read_bytes()

@@ -13,6 +13,7 @@ tests ask for explicitly.
 from __future__ import annotations
 
 import json
+import os
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -127,18 +128,40 @@ class ListingSink:
 
 
 class JsonSink:
-    """``post --json``: each block as one JSON object on a line, as it is made."""
+    """``post --json``: each block as one JSON object on a line, as it is made. A reader
+    that goes away (``| head``) ends the JSON lines, not the post: the tape is still made."""
 
     def __init__(self, stream: IO[str], machine: MachineDefinition) -> None:
         self.stream = stream
         self.machine = machine
+        self.gone = False
 
     def block(self, block: Block, line: str | None) -> None:
+        if self.gone:
+            return
         record = block_record(block, self.machine, line)
-        self.stream.write(json.dumps(record, separators=(",", ":")) + "\n")
+        try:
+            self.stream.write(json.dumps(record, separators=(",", ":")) + "\n")
+        except BrokenPipeError:
+            self._reader_gone()
 
     def close(self, ending: Ending) -> None:
-        self.stream.flush()
+        if self.gone:
+            return
+        try:
+            self.stream.flush()
+        except BrokenPipeError:
+            self._reader_gone()
+
+    def _reader_gone(self) -> None:
+        self.gone = True
+        try:  # what is still buffered must not fail again when the process exits
+            descriptor = self.stream.fileno()
+        except (OSError, ValueError, AttributeError):
+            return
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, descriptor)
+        os.close(devnull)
 
 
 @dataclass
