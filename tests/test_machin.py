@@ -80,3 +80,15 @@ def test_machin_after_the_first_motion_cannot_choose_the_machine(tmp_path: Path)
     assert [d.text for d in result.diagnostics] == [
         f"MACHIN/GECENT,23 IGNORED: THE RUN USES MACHINE {result.machine.label}"
     ]
+
+
+def test_a_machine_number_that_is_not_finite_is_bad_input(tmp_path) -> None:  # type: ignore[no-untyped-def]
+    """The first pass reads MACHIN before the run's checks: it refuses 1e400 itself."""
+    from click.testing import CliRunner
+    from gecent.core.cli import main
+
+    source = tmp_path / "m.apt"
+    source.write_text("MACHIN/GECENT,1e400\nFINI\n")
+    result = CliRunner().invoke(main, ["post", str(source), "-o", str(tmp_path / "m.tape")])
+    assert result.exit_code == 2
+    assert "MACHIN/GECENT has a value that is not a finite number (inf)" in result.stderr

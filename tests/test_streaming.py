@@ -185,6 +185,7 @@ def test_the_segment_bound_is_the_users_to_move(tmp_path: Path) -> None:
         ("GOTO/1e300,0,0", "coordinate 1e+300 is beyond any position the machine can reach"),
         ("FEDRAT/1e999", "FEDRAT has a value that is not a finite number (inf)"),
         ("CIRCLE/0,0,0,0,0,1,1e999", "CIRCLE has a value that is not a finite number (inf)"),
+        ("MACHIN/GECENT,23,OPTAB,4,1e999", "MACHIN has a value that is not a finite number"),
     ],
 )
 def test_numbers_no_machine_can_take_are_bad_input(
@@ -253,3 +254,15 @@ def test_a_json_reader_that_goes_away_ends_the_json_not_the_post(tmp_path: Path)
     whole = subprocess.run([*command[:-2], "-o", str(tmp_path / "whole.tape")], check=True)
     assert whole.returncode == 0
     assert tape.read_bytes() == (tmp_path / "whole.tape").read_bytes()
+
+
+def test_a_value_no_register_can_hold_stops_the_run_naming_it(tmp_path: Path) -> None:
+    """DELAY/1e308 is finite, but its dwell word overflows every format: the manual's
+    register overflow, with file and line, the listing kept with its dump, no tape."""
+    source = tmp_path / "d.apt"
+    source.write_text("MACHIN/GECENT,23\nFROM/0,0,0\nDELAY/1e308\nFINI\n")
+    code, _, err = run(
+        "post", str(source), "-o", str(tmp_path / "d.tape"), "--listing", str(tmp_path / "d.lis")
+    )
+    assert code == 1 and f"{source}:3 (record 3): error: X1e+307 does not fit" in err
+    assert names(tmp_path) == ["d.apt", "d.lis"]

@@ -7,6 +7,7 @@ from __future__ import annotations
 
 from collections.abc import Iterable
 from dataclasses import dataclass, field
+from math import isfinite
 
 from gecent.core.cl.records import Motion, Record, Statement, Word
 from gecent.core.errors import (
@@ -42,6 +43,11 @@ def parse_machin(statement: Statement) -> MachinRequest | None:
     where = statement.where
     if not args or not isinstance(args[0], Word) or args[0].name != POSTPROCESSOR_NAME:
         return None
+    for arg in args:
+        if isinstance(arg, float) and not isfinite(arg):
+            raise InputError(
+                f"MACHIN/GECENT has a value that is not a finite number ({arg})", where
+            )
     request = MachinRequest(number=None)
     position = 1
     if position < len(args) and isinstance(args[position], int | float):

@@ -90,7 +90,10 @@ class RegisterFormatter:
         """The printed and punched forms. ``suppress_leading`` (option 51 = -2, the 100M's
         G11/G12 departures) drops the punched integer digits' leading zeros and that many
         zeros after the point (001 L16270-16295); the printed form keeps them."""
-        units = _units(abs(value), self.fmt.right)
+        try:
+            units = _units(abs(value), self.fmt.right)
+        except (OverflowError, ValueError):  # infinite or NaN: no register holds it
+            raise FormatOverflow(self.letter, value, self.fmt) from None
         return self.format_units(units, value < 0, value, suppress_leading)
 
     def format_units(
