@@ -28,3 +28,21 @@ def test_printout_renders_a_titled_listing(info: PluginInfo) -> None:
     blocks = [Block(Code.PARTNO, 1, "PART 1"), Block(Code.PPRINT, 2, "HELLO")]
     text = info.obj.render(standard_machine(), blocks, "PART 1")
     assert "GECENT III" in text and "PART 1" in text and "HELLO" in text
+
+
+@pytest.mark.parametrize("info", **plugin_params("printouts"))
+def test_printout_pages_stream_as_it_renders(info: PluginInfo) -> None:
+    """The page maker the listing sink drives gives the same text as ``render``, whatever
+    the number of pages (a page holds option 79 lines)."""
+    from gecent.core.machine import standard_machine
+    from gecent.core.output.block import Block, Code
+    from gecent.core.output.tape import tape_line
+
+    machine = standard_machine()
+    blocks = [Block(Code.PARTNO, 1, "PART 1")]
+    blocks += [Block(Code.PPRINT, n, f"NOTE {n}") for n in range(2, 200)]
+    pages = info.obj.listing(machine, lambda: "PART 1")
+    streamed = "".join(pages.block(block, tape_line(block)) for block in blocks)
+    streamed += pages.finish()
+    assert streamed == info.obj.render(machine, blocks, "PART 1")
+    assert streamed.count("PAGE ") > 1
