@@ -38,6 +38,7 @@ from gecent.core.units import UnitScale
 # a register whose last decimal is the machine step formats whole steps without floats,
 # exactly as from the value, while the step count stays well inside a float's precision
 EXACT_UNITS = 10**9
+F_WORDS_KEPT = 4096  # the F word texts remembered (a feedrate number repeats along a path)
 
 
 class FastLinear:
@@ -186,6 +187,7 @@ class FastLinear:
         zero_rule = words.zero_rule
         f_formatter = words._f_formatter
         g_words = self.g_words
+        f_words: dict[tuple[float | None, float], tuple[str, str]] = {}  # feeds recur
         slots = [
             (location, formatter, axis, sign, factor, scale, _units_text(formatter), letter)
             for (location, formatter, axis, sign, factor, scale) in self.slots
@@ -345,8 +347,14 @@ class FastLinear:
                     words.previous_f = command
                     if f_format is not None:
                         formatter = f_formatter(f_format)
-                    text = formatter.format(command)
-                    printed, punched = text.printed, text.punched
+                    key = (f_format, command)
+                    words_of_f = f_words.get(key)
+                    if words_of_f is None:
+                        text = formatter.format(command)
+                        if len(f_words) >= F_WORDS_KEPT:
+                            f_words.clear()
+                        words_of_f = f_words[key] = (text.printed, text.punched)
+                    printed, punched = words_of_f
                 if blocks_wanted:  # the listing and JSON lines print the words
                     printed_words.append((location, printed))
                 punched_words.append(letter + punched)
