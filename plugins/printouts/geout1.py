@@ -192,6 +192,17 @@ class LineMaker:
             else:
                 kind = {"F-IPM": FEED, "S-RPM": SPEED, "CLREC": RECORD}[key]
             self.columns.append((kind, end, cell, axes, decimals))
+        self.register_ends = {
+            cell: end for kind, end, cell, _, _ in self.columns if kind == REGISTER
+        }
+        self.trailing = [
+            (kind, end, axes, decimals)
+            for kind, end, _, axes, decimals in self.columns
+            if kind != REGISTER
+        ]
+        registers = [i for i, (kind, *_) in enumerate(self.columns) if kind == REGISTER]
+        # words are laid out in their own order: the register columns must come first
+        assert registers == list(range(len(registers)))
 
     def line(self, block: Block, origin: tuple[float, float, float] = (0.0, 0.0, 0.0)) -> str:
         code = block.code
@@ -199,22 +210,20 @@ class LineMaker:
             return block.text or ""
         if code not in PRINTABLE:
             raise NotYetSupported(f"GEOUT1 line for a CODE {int(code)} block")
-        printed = dict(block.words)
         position = block.position
         cells = block.cells
         step = self.step
         operator = self.operator
-        registers = code is not Code.FROM
         line = ""
-        for kind, end, cell, axes, decimals in self.columns:
-            if kind == REGISTER:
-                if not registers:
-                    continue
-                text = printed.get(cell)
-                if text is None:
-                    continue
-                line = line.ljust(end - len(text)) + text
-            elif kind == ABSOLUTE:
+        if code is not Code.FROM:
+            # the words come in the machine's output order, which is the columns' order
+            ends = self.register_ends
+            for location, text in block.words:
+                end = ends.get(location)
+                if end is not None:
+                    line = line.ljust(end - len(text)) + text
+        for kind, end, axes, decimals in self.trailing:
+            if kind == ABSOLUTE:
                 if position is None:
                     continue
                 for internal, sign in axes:
@@ -309,7 +318,7 @@ class Geout1Pages:
             first=self.pages == 1,
             last=last,
             number=self.pages,
-            lines=lines,
+            body="".join(f"{line}\n" for line in lines),  # the lines, joined here: one value
             cut=cut,
             dwell=dwell,
             title=self.title,
