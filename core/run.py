@@ -40,7 +40,7 @@ from gecent.core.motion.circle import CircularMotion
 from gecent.core.motion.control_cycles import ControlCycles
 from gecent.core.motion.cycles import Cycle, cycle_legs
 from gecent.core.motion.fastpath import FastLinear
-from gecent.core.motion.guard import DEFAULT_MAX_SEGMENTS, CoordinateGuard, check_finite
+from gecent.core.motion.guard import DEFAULT_MAX_SEGMENTS, CoordinateGuard, check_numbers
 from gecent.core.motion.linear import LinearMotion, godlta_delta
 from gecent.core.motion.positioning import PositioningMotion
 from gecent.core.motion.rotary import RotaryElement
@@ -349,7 +349,7 @@ class Run:
             else:  # "not recognized ... therefore, disregarded" (001 L3203-3205)
                 self.warn(Diagnostic(f"{record.major} {UNKNOWN_WORD}", record.where))
         elif isinstance(record, Arelem):
-            self._arelem(record)
+            self.state.tolerances.take(record.subtype, record.values)
         elif isinstance(record, Circle):
             self.circle.surface(record)  # ignored on a linear-only control (option 9 = 0)
         elif isinstance(record, Fini):
@@ -376,18 +376,14 @@ class Run:
         return self.result
 
     def _check_values(self, record: Record) -> None:
-        """Every number a record carries is finite; a motion's points are positions the
-        machine can take (core/motion/guard.py)."""
-        if isinstance(record, Motion):
-            if self._guard is None:
-                self._guard = CoordinateGuard(self.machine, self.output.words.shuffle)
-            position = self.state.position
-            self._guard.motion(record, position.previous_part, position.translation)
-        elif isinstance(record, Statement):
-            numbers = [a for a in record.args if isinstance(a, float)]
-            check_finite(tuple(numbers), record.where, record.major)
-        elif isinstance(record, Circle | Arelem):
-            check_finite(record.values, record.where, type(record).__name__.upper())
+        """Numbers the machine cannot take are bad input (core/motion/guard.py)."""
+        if not isinstance(record, Motion):
+            check_numbers(record)
+            return
+        if self._guard is None:
+            self._guard = CoordinateGuard(self.machine, self.output.words.shuffle)
+        position = self.state.position
+        self._guard.motion(record, position.previous_part, position.translation)
 
     def _collect_notes(self, record: Record) -> None:
         notes = self.output.diagnostics
@@ -492,17 +488,6 @@ class Run:
             at = nxt
         return total
 
-    def _arelem(self, record: Arelem) -> None:
-        tolerances = self.state.tolerances
-        if record.subtype == 4 and record.values:
-            tolerances.inside = record.values[0]
-        elif record.subtype == 5 and record.values:
-            tolerances.outside = record.values[0]
-        elif record.subtype == 6 and record.values:
-            # CUTRAD = D/2; a ball cutter when the corner radius is D/2 (001 L3589-3615)
-            tolerances.cutter_radius = record.values[0] / 2
-            corner = record.values[1] if len(record.values) > 1 else 0.0
-            tolerances.ball = abs(corner - tolerances.cutter_radius) < 1e-6
 
 
 AFTER_END = "END OR RESET HAS NOT BEEN FOLLOWED BY A FROM POINT."  # comment 47 (L34080)

@@ -110,6 +110,18 @@ class Tolerances:
     cutter_radius: float = 0.0
     ball: bool = False
 
+    def take(self, subtype: int, values: tuple[float, ...]) -> None:
+        """An ARELEM record: 4 INTOL, 5 OUTTOL, 6 CUTTER."""
+        if subtype == 4 and values:
+            self.inside = values[0]
+        elif subtype == 5 and values:
+            self.outside = values[0]
+        elif subtype == 6 and values:
+            # CUTRAD = D/2; a ball cutter when the corner radius is D/2 (001 L3589-3615)
+            self.cutter_radius = values[0] / 2
+            corner = values[1] if len(values) > 1 else 0.0
+            self.ball = abs(corner - self.cutter_radius) < 1e-6
+
 
 @dataclass(slots=True)
 class Modes:

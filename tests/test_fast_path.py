@@ -141,35 +141,6 @@ def test_generated_programs_post_the_same_by_both_paths(
     _same(source, machine, folder)
 
 
-@settings(max_examples=400, deadline=None)
-@given(
-    regfor=st.sampled_from([10.0, 20.0, 30.0, -24.0, 24.0, -53.0, 53.0, -44.0, 4.0, -4.0, 43.0]),
-    units=st.integers(0, 10**8),
-    negative=st.booleans(),
-    drop=st.booleans(),
-    decimal=st.booleans(),
-    location=st.sampled_from([1, 3, 11]),
-)
-def test_whole_step_words_agree_with_the_register_formatter(
-    regfor: float, units: int, negative: bool, drop: bool, decimal: bool, location: int
-) -> None:
-    """The fast path's word texts are the formatter's, overflow included."""
-    from gecent.core.machine.regformat import decode_regfor
-    from gecent.core.motion.fastpath import _units_text
-    from gecent.core.output.format import FormatOverflow, RegisterFormatter
-
-    fmt = decode_regfor(regfor)
-    assert fmt is not None
-    formatter = RegisterFormatter(location, "X", fmt, drop_trailing=drop, decimal=decimal)
-    try:
-        expected = formatter.format_units(units, negative)
-    except FormatOverflow:
-        with pytest.raises(FormatOverflow):
-            _units_text(formatter)(units, negative)
-        return
-    assert _units_text(formatter)(units, negative) == (expected.printed, expected.punched)
-
-
 @pytest.mark.parametrize("machine", MACHINES)
 def test_the_fast_g_code_choice_is_selg(machine: str) -> None:
     """Bisection over the range limits picks SELG's code for every size up to DEPMAX."""

@@ -124,3 +124,75 @@ def test_w14_sequence_numbers_wrap_at_seqlim() -> None:
     for record in (999, 1000, 2000):
         element.output(Block(Code.AUX_ONLY, record))
     assert [b.punch for b in emitted] == ["N999", "N001", "N002"]
+
+
+def _digit_by_digit(
+    formatter: RegisterFormatter, units: int, negative: bool, leading: int | None
+) -> tuple[str, str]:
+    """The register word as the manual builds it, digit string by digit string: the
+    oracle for the formatter's arithmetic (001 L24057-24062, L16270-16295)."""
+    fmt = formatter.fmt
+    if formatter.bare:
+        if len(str(units)) > fmt.left and units:
+            raise FormatOverflow(formatter.letter, float(units), fmt)
+        text = ("-" if negative and units else "") + str(units)
+        return text, text
+    if formatter.decimal:
+        whole_units, fraction_units = divmod(units, 10**fmt.right)
+        if len(str(whole_units)) > fmt.left and whole_units:
+            raise FormatOverflow(formatter.letter, float(units), fmt)
+        shown = str(fraction_units).rjust(fmt.right, "0").rstrip("0")
+        text = ("-" if negative and units else "") + f"{whole_units}.{shown}"
+        return text, text
+    digits = str(units).rjust(fmt.right + 1, "0")
+    whole, fraction = digits[: len(digits) - fmt.right], digits[len(digits) - fmt.right :]
+    whole = whole.lstrip("0")
+    if len(whole) > fmt.left:
+        raise FormatOverflow(formatter.letter, float(units), fmt)
+    whole = whole.rjust(fmt.left, "0")
+    shown = fraction.rstrip("0").ljust(fmt.right) if formatter.drop_trailing else fraction
+    sign = ("-" if negative and units else "+") if fmt.signed else ""
+    printed = sign + whole + ("." if formatter.point else "") + shown
+    punched = (sign + whole + shown).replace(" ", "")
+    if leading is not None:
+        first, kept = whole.lstrip("0"), shown.replace(" ", "")
+        if not first and kept.startswith("0" * leading):
+            kept = kept[leading:]
+        punched = sign + first + kept
+    if punched.strip("+-") == "":
+        punched = sign + "0"
+    return printed, punched
+
+
+@settings(max_examples=600, deadline=None)
+@given(
+    regfor=st.sampled_from([10.0, 20.0, 30.0, -24.0, 24.0, -53.0, 53.0, -44.0, 4.0, -4.0, 43.0]),
+    units=st.one_of(st.integers(0, 10**8), st.sampled_from([0, 1, 9, 10, 99, 100, 9999, 10000])),
+    negative=st.booleans(),
+    drop=st.booleans(),
+    decimal=st.booleans(),
+    location=st.sampled_from([1, 2, 3, 11]),
+    leading=st.sampled_from([None, 0, 1]),
+)
+def test_register_words_are_the_digit_by_digit_words(
+    regfor: float,
+    units: int,
+    negative: bool,
+    drop: bool,
+    decimal: bool,
+    location: int,
+    leading: int | None,
+) -> None:
+    """Every register format's word, overflow included, as the digit strings give it."""
+    fmt = decode_regfor(regfor)
+    assert fmt is not None
+    formatter = RegisterFormatter(location, "X", fmt, drop_trailing=drop, decimal=decimal)
+    if formatter.modern:
+        leading = None  # the 100M's rule is for its fixed-digit words
+    try:
+        expected = _digit_by_digit(formatter, units, negative, leading)
+    except FormatOverflow:
+        with pytest.raises(FormatOverflow):
+            formatter.texts(units, negative, None, leading)
+        return
+    assert formatter.texts(units, negative, None, leading) == expected

@@ -131,7 +131,7 @@ def test_a_character_the_punch_code_lacks_stops_the_run_with_no_file(tmp_path: P
 def test_sinks_close_all_even_when_one_fails(tmp_path: Path) -> None:
     class Failing:
         def block(self, block, line):  # type: ignore[no-untyped-def]
-            pass
+            """Takes the blocks and writes nothing."""
 
         def close(self, ending: Ending) -> None:
             raise OSError("disk gone")

@@ -29,7 +29,7 @@ from gecent.core.motion.guard import CoordinateGuard
 from gecent.core.motion.linear import LinearMotion
 from gecent.core.output.block import Block, Code
 from gecent.core.output.element import OutputElement
-from gecent.core.output.format import Formatted, RegisterFormatter
+from gecent.core.output.format import RegisterFormatter
 from gecent.core.output.sinks import Sinks
 from gecent.core.output.words import ZERO_RULE_CELLS
 from gecent.core.state import PostState
@@ -38,7 +38,7 @@ from gecent.core.units import UnitScale
 # a register whose last decimal is the machine step formats whole steps without floats,
 # exactly as from the value, while the step count stays well inside a float's precision
 EXACT_UNITS = 10**9
-F_WORDS_KEPT = 4096  # the F word texts remembered (a feedrate number repeats along a path)
+WORDS_KEPT = 4096  # G and F word texts remembered at most
 
 
 class FastLinear:
@@ -109,7 +109,6 @@ class FastLinear:
         # option 46: rapid shifts gears by M codes, which would ride in the move's block;
         # without, entering and leaving rapid changes only the feed's flags
         self.gear_shifts = machine.number_option(46) != 0
-        self.g_words: dict[float, Formatted] = {}
         self.blocks_wanted = not sinks.lines_only
         self.goto = self.compile()
 
@@ -146,7 +145,7 @@ class FastLinear:
             and not state.numbering.off
             and state.pending.spindle is ABSENT
             and state.pending.m_code is ABSENT
-            and (feed.programmed is not None or output._assumed_feed)
+            and (feed.programmed is not None or output.assumed_feed)
             and feed.ipm > 0
             and (not modern.frame or modern.started)
             and (not modern.direct_feed or modern.per_revolution == feed.per_revolution)
@@ -185,11 +184,20 @@ class FastLinear:
         suppress_g = words.suppress_g
         suppress_f = words.suppress_f
         zero_rule = words.zero_rule
-        f_formatter = words._f_formatter
-        g_words = self.g_words
-        f_words: dict[tuple[float | None, float], tuple[str, str]] = {}  # feeds recur
+        f_formatter = words.f_formatter
+        # G codes and feeds recur along a path: their word texts are made once each
+        texts: dict[tuple[RegisterFormatter, float], tuple[str, str]] = {}
+
+        def remembered(formatter: RegisterFormatter, value: float) -> tuple[str, str]:
+            found = texts.get((formatter, value))
+            if found is None:
+                if len(texts) >= WORDS_KEPT:
+                    texts.clear()
+                text = formatter.format(value)
+                found = texts[formatter, value] = (text.printed, text.punched)
+            return found
         slots = [
-            (location, formatter, axis, sign, factor, scale, _units_text(formatter), letter)
+            (location, formatter, axis, sign, factor, scale, formatter.texts, letter)
             for (location, formatter, axis, sign, factor, scale) in self.slots
             for letter in (formatter.letter,)
         ]
@@ -337,8 +345,7 @@ class FastLinear:
                     if suppress_g and g_code == words.previous_g:
                         continue
                     words.previous_g = g_code
-                    text = g_words.get(g_code) or self._g_word(formatter, g_code)
-                    printed, punched = text.printed, text.punched
+                    printed, punched = remembered(formatter, g_code)
                 else:
                     if command is None:
                         continue
@@ -347,14 +354,7 @@ class FastLinear:
                     words.previous_f = command
                     if f_format is not None:
                         formatter = f_formatter(f_format)
-                    key = (f_format, command)
-                    words_of_f = f_words.get(key)
-                    if words_of_f is None:
-                        text = formatter.format(command)
-                        if len(f_words) >= F_WORDS_KEPT:
-                            f_words.clear()
-                        words_of_f = f_words[key] = (text.printed, text.punched)
-                    printed, punched = words_of_f
+                    printed, punched = remembered(formatter, command)
                 if blocks_wanted:  # the listing and JSON lines print the words
                     printed_words.append((location, printed))
                 punched_words.append(letter + punched)
@@ -386,74 +386,6 @@ class FastLinear:
             return True
 
         return goto
-
-    def _g_word(self, formatter: RegisterFormatter, code: float) -> Formatted:
-        text = self.g_words[code] = formatter.format(code)
-        return text
-
-
-def _units_text(formatter: RegisterFormatter) -> Callable[[int, bool], tuple[str, str]]:
-    """(printed, punched) of a magnitude in units of the format's last decimal: the
-    modern decimal form written out here (it is most of a G-code tape), the others through
-    the formatter itself; an overflow always goes to the formatter, which names it."""
-    fmt = formatter.fmt
-    right = fmt.right
-    if formatter.modern and formatter.decimal:
-        power = 10**right
-        limit = 10**fmt.left
-        width = f"0{right}d"
-
-        def decimal(units: int, negative: bool) -> tuple[str, str]:
-            whole, fraction = divmod(units, power)
-            if whole >= limit:
-                text = formatter.format_units(units, negative)
-                return text.printed, text.punched
-            shown = format(fraction, width).rstrip("0")
-            text_ = f"-{whole}.{shown}" if negative and units else f"{whole}.{shown}"
-            return text_, text_
-
-        return decimal
-
-    def general(units: int, negative: bool) -> tuple[str, str]:
-        text = formatter.format_units(units, negative)
-        return text.printed, text.punched
-
-    if formatter.modern:
-        if not formatter.bare:
-            return general
-        bare_limit = 10**fmt.left
-
-        def bare(units: int, negative: bool) -> tuple[str, str]:
-            if units >= bare_limit:
-                return general(units, negative)  # the formatter names the overflow
-            text_ = f"-{units}" if negative and units else str(units)
-            return text_, text_
-
-        return bare
-    left = fmt.left
-    power = 10**right
-    limit = 10**left
-    signed = fmt.signed
-    point = "." if formatter.point else ""
-    drop = formatter.drop_trailing
-    whole_width = f"0{left}d"
-    fraction_width = f"0{right}d"
-
-    def classic(units: int, negative: bool) -> tuple[str, str]:
-        whole_units, fraction_units = divmod(units, power)
-        if whole_units >= limit:
-            return general(units, negative)  # the formatter names the overflow
-        whole = format(whole_units, whole_width) if left else ""
-        fraction = format(fraction_units, fraction_width) if right else ""
-        kept = fraction.rstrip("0") if drop else fraction
-        sign = ("-" if negative and units else "+") if signed else ""
-        printed = sign + whole + point + (kept.ljust(right) if drop else fraction)
-        punched = sign + whole + kept
-        if not whole and not kept:
-            punched = sign + "0"
-        return printed, punched
-
-    return classic
 
 
 def _selector(codes: LinearCodes) -> Callable[[int], DimensionCode]:

@@ -14,7 +14,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 from math import isfinite
 
-from gecent.core.cl.records import Motion, MotionSubtype
+from gecent.core.cl.records import Arelem, Circle, Motion, MotionSubtype, Record, Statement
 from gecent.core.errors import InputError, SourcePosition
 from gecent.core.machine.definition import MachineDefinition
 
@@ -40,13 +40,13 @@ def check_finite(values: tuple[float, ...], where: SourcePosition | None, what: 
             raise InputError(f"{what} has a value that is not a finite number ({value})", where)
 
 
-def check_steps(steps: int, where: SourcePosition | None, value: float) -> None:
-    if abs(steps) > LARGEST_STEPS:
-        raise InputError(
-            f"coordinate {value:g} is beyond any position the machine can reach "
-            f"({LARGEST_STEPS:,} steps)",
-            where,
-        )
+def check_numbers(record: Record) -> None:
+    """Every number a statement, CIRCLE or ARELEM record carries is finite."""
+    if isinstance(record, Statement):
+        numbers = tuple(a for a in record.args if isinstance(a, float))
+        check_finite(numbers, record.where, record.major)
+    elif isinstance(record, Circle | Arelem):
+        check_finite(record.values, record.where, type(record).__name__.upper())
 
 
 class CoordinateGuard:
@@ -93,7 +93,11 @@ class CoordinateGuard:
     def _beyond(self, record: Motion, axis: int, value: float) -> None:
         letter = self.registers[axis]
         if letter is None:
-            check_steps(LARGEST_STEPS + 1, record.where, value)
+            raise InputError(
+                f"coordinate {value:g} is beyond any position the machine can reach "
+                f"({LARGEST_STEPS:,} steps)",
+                record.where,
+            )
         raise InputError(
             f"{'XYZ'[axis]} {value:g} is beyond what the {letter} register holds "
             f"({self.reach[axis]:.12g})",

@@ -88,7 +88,7 @@ class OutputElement:
         # where finished blocks go (core/output/sinks.py); the run sets it
         self.emit: Callable[[Block], None] = _nowhere
         self.diagnostics: list[Diagnostic] = []
-        self._assumed_feed = False
+        self.assumed_feed = False
         # a positioning machine's feed type (option 78), set by the run; CYCLE/MILL in force
         self.positioning_feed: FeedType | None = None
         self.milling = False
@@ -411,7 +411,7 @@ class OutputElement:
         """No FEDRAT before the first cut: option 23, once, with the manual's comment
         (001 L34083, L24674-24679)."""
         feed = self.state.feed
-        if feed.programmed is None and not self._assumed_feed:
+        if feed.programmed is None and not self.assumed_feed:
             assumed = self.state.machine.number_option(23)
             if assumed <= 0:
                 raise InputError(
@@ -419,7 +419,7 @@ class OutputElement:
                     "feedrate (processing stops)",
                     SourcePosition("", None, None, self.state.sequence),
                 )
-            self._assumed_feed = True
+            self.assumed_feed = True
             self.diagnostics.append(Diagnostic("OPTION FEEDRATE ASSUMED."))
             feed.ipm = assumed
 

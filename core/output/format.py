@@ -58,6 +58,11 @@ class RegisterFormatter:
     """Formats values of one register (one REGSTR/REGFOR location)."""
 
     __slots__ = (
+        "_dot",
+        "_fraction_width",
+        "_limit",
+        "_power",
+        "_whole_width",
         "bare",
         "decimal",
         "drop_trailing",
@@ -85,6 +90,12 @@ class RegisterFormatter:
         self.decimal = decimal and fmt.right > 0
         self.bare = decimal and fmt.right == 0 and location not in CODE_WIDTH
         self.modern = self.decimal or self.bare  # one test on the manual's hot path
+        # worked out once: the units of a whole number, the first that overflows, widths
+        self._power = 10**fmt.right
+        self._limit = 10**fmt.left
+        self._whole_width = f"0{fmt.left}d"
+        self._fraction_width = f"0{fmt.right}d"
+        self._dot = "." if self.point else ""
 
     def format(self, value: float, suppress_leading: int | None = None) -> Formatted:
         """The printed and punched forms. ``suppress_leading`` (option 51 = -2, the 100M's
@@ -94,7 +105,8 @@ class RegisterFormatter:
             units = _units(abs(value), self.fmt.right)
         except (OverflowError, ValueError):  # infinite or NaN: no register holds it
             raise FormatOverflow(self.letter, value, self.fmt) from None
-        return self.format_units(units, value < 0, value, suppress_leading)
+        printed, punched = self.texts(units, value < 0, value, suppress_leading)
+        return Formatted(printed, punched)
 
     def format_units(
         self,
@@ -105,44 +117,44 @@ class RegisterFormatter:
     ) -> Formatted:
         """The same, from the magnitude in units of the format's last decimal (a whole
         number of steps on the fast path); ``value`` is only for an overflow's message."""
-        fmt = self.fmt
-        if value is None:
-            value = (-units if negative else units) / float(10**fmt.right)
-        if self.modern:
-            return self._decimal(value, units) if self.decimal else self._bare(value, units)
-        digits = str(units).rjust(fmt.right + 1, "0")
-        whole, fraction = digits[: len(digits) - fmt.right], digits[len(digits) - fmt.right :]
-        whole = whole.lstrip("0")
-        if len(whole) > fmt.left:
-            raise FormatOverflow(self.letter, value, fmt)
-        whole = whole.rjust(fmt.left, "0")
-        shown = fraction.rstrip("0").ljust(fmt.right) if self.drop_trailing else fraction
-        sign = ("-" if negative and units else "+") if fmt.signed else ""
-        printed = sign + whole + ("." if self.point else "") + shown
-        punched = (sign + whole + shown).replace(" ", "")
-        if suppress_leading is not None:
-            leading, kept = whole.lstrip("0"), shown.replace(" ", "")
-            if not leading and kept.startswith("0" * suppress_leading):
-                kept = kept[suppress_leading:]
-            punched = sign + leading + kept
-        if punched.strip("+-") == "":
-            punched = sign + "0"
+        printed, punched = self.texts(units, negative, value, suppress_leading)
         return Formatted(printed, punched)
 
-    def _bare(self, value: float, units: int) -> Formatted:
-        if len(str(units)) > self.fmt.left and units:
+    def texts(
+        self,
+        units: int,
+        negative: bool,
+        value: float | None = None,
+        suppress_leading: int | None = None,
+    ) -> tuple[str, str]:
+        """(printed, punched) of a magnitude in units of the last decimal: the decimal-point
+        word of a modern control (option 255), the bare whole number, or the manual's fixed
+        digits with their sign, point and trailing zeros (001 L24057-24062)."""
+        whole_units, fraction_units = divmod(units, self._power)
+        if whole_units >= self._limit:
+            if value is None:
+                value = (-units if negative else units) / float(self._power)
             raise FormatOverflow(self.letter, value, self.fmt)
-        text = ("-" if value < 0 and units else "") + str(units)
-        return Formatted(text, text)
-
-    def _decimal(self, value: float, units: int) -> Formatted:
+        if self.decimal:
+            shown = format(fraction_units, self._fraction_width).rstrip("0")
+            text = f"-{whole_units}.{shown}" if negative and units else f"{whole_units}.{shown}"
+            return text, text
+        if self.bare:
+            text = f"-{units}" if negative and units else str(units)
+            return text, text
         fmt = self.fmt
-        whole, fraction = divmod(units, 10**fmt.right)
-        if len(str(whole)) > fmt.left and whole:
-            raise FormatOverflow(self.letter, value, fmt)
-        shown = str(fraction).rjust(fmt.right, "0").rstrip("0")
-        text = ("-" if value < 0 and units else "") + f"{whole}.{shown}"
-        return Formatted(text, text)
+        whole = format(whole_units, self._whole_width) if fmt.left else ""
+        fraction = format(fraction_units, self._fraction_width) if fmt.right else ""
+        kept = fraction.rstrip("0") if self.drop_trailing else fraction
+        sign = ("-" if negative and units else "+") if fmt.signed else ""
+        printed = sign + whole + self._dot + (kept.ljust(fmt.right) if self.drop_trailing else kept)
+        if suppress_leading is not None:
+            whole = whole.lstrip("0")
+            if not whole and kept.startswith("0" * suppress_leading):
+                kept = kept[suppress_leading:]
+        if not whole and not kept:
+            return printed, sign + "0"
+        return printed, sign + whole + kept
 
 
 def _units(magnitude: float, decimals: int) -> int:

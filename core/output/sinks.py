@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import json
 import os
-from collections.abc import Callable
+from abc import ABC, abstractmethod
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import IO, Protocol
@@ -57,7 +57,7 @@ class ListingWriter(Protocol):
     def finish(self) -> str: ...
 
 
-class LineSink:
+class LineSink(ABC):
     """A sink of tape lines (the tape image, the punched tape): the fast path hands it the
     line alone; written only when the run finishes with the punch not suppressed."""
 
@@ -68,8 +68,9 @@ class LineSink:
         if line is not None:
             self.line(line)
 
+    @abstractmethod
     def line(self, line: str) -> None:
-        raise NotImplementedError
+        """Write one tape line."""
 
     def close(self, ending: Ending) -> None:
         if ending.ok and not ending.punch_suppressed:
@@ -175,27 +176,31 @@ class CollectSink:
         self.blocks.append(block)
 
     def close(self, ending: Ending) -> None:
-        pass
+        """Nothing to write: the blocks stay with the caller."""
 
 
 class Sinks:
     """The fan-out: each block's tape line is worked out once, then every sink gets both."""
 
     def __init__(self, sinks: list[Sink] | None = None) -> None:
-        self.sinks: list[Sink] = list(sinks or [])
+        self.sinks: list[Sink] = []
+        self.line_sinks: list[LineSink] = []  # all of them when the fast path needs no Block
         self.partno = ""  # the first PARTNO's text: the listing's page heading
         self.closed = False
-        self.emit: Callable[[Block], None] = self._emit
+        for sink in sinks or []:
+            self.add(sink)
 
     def add(self, sink: Sink) -> None:
         self.sinks.append(sink)
+        if isinstance(sink, LineSink):
+            self.line_sinks.append(sink)
 
     @property
     def lines_only(self) -> bool:
         """Every sink takes tape lines alone (tape, punch): the fast path makes no Block."""
-        return all(isinstance(sink, LineSink) for sink in self.sinks)
+        return len(self.line_sinks) == len(self.sinks)
 
-    def _emit(self, block: Block) -> None:
+    def emit(self, block: Block) -> None:
         line = tape_line(block)
         for sink in self.sinks:
             sink.block(block, line)
@@ -207,8 +212,8 @@ class Sinks:
 
     def emit_line(self, line: str) -> None:
         """A tape line alone, when :attr:`lines_only`."""
-        for sink in self.sinks:
-            sink.line(line)  # type: ignore[attr-defined]  # lines_only: every sink a LineSink
+        for sink in self.line_sinks:
+            sink.line(line)
 
     def close(self, ending: Ending) -> None:
         """Close every sink, even when one fails; the first failure is raised after."""

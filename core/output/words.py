@@ -98,7 +98,7 @@ class WordFormatter:
         extra = self.leading_zero_codes.get(float(block.cells[2]))
         return None if extra is None else {3: extra, 4: extra, 5: extra}
 
-    def _f_formatter(self, regfor: float) -> RegisterFormatter:
+    def f_formatter(self, regfor: float) -> RegisterFormatter:
         """FVARGO: inverse time changes the F format with the block's G code."""
         formatter = self._f_formats.get(regfor)
         if formatter is None:
@@ -162,7 +162,7 @@ class WordFormatter:
                     continue
                 self.previous_f = number
             if location == 11 and block.f_format is not None:
-                formatter = self._f_formatter(block.f_format)
+                formatter = self.f_formatter(block.f_format)
             try:
                 text = formatter.format(
                     number,

@@ -139,16 +139,6 @@ class Geout1:
     section: str = "§3.5.4"
     template: str = PAGE_TEMPLATE
 
-    def line(
-        self,
-        machine: MachineDefinition,
-        layout: list[Column],
-        block: Block,
-        origin: tuple[float, float, float] = (0.0, 0.0, 0.0),
-    ) -> str:
-        """One block's line (see :class:`LineMaker`)."""
-        return LineMaker(machine, layout).line(block, origin)
-
     def listing(self, machine: MachineDefinition, partno: Callable[[], str]) -> Geout1Pages:
         """The page maker of a streaming listing; ``partno`` gives the PARTNO heading."""
         return Geout1Pages(self, machine, partno)
