@@ -4,7 +4,10 @@ The Creo roughing file is repeated (the set-up statements once, the moves ``--co
 times, FINI once) and posted by ``gecent post`` in a child process; in the same run a bare
 Python loop, also a child process, reads the same file, parses each GOTO and prints a G1
 line. Speed is the ratio of the two GOTO rates (this machine is noisy; a ratio measured in
-one run means more than absolute times), best of ``--repeat`` runs each. Peak RSS is the
+one run means more than absolute times), best of ``--repeat`` runs each. A third child,
+``reference_post.py``, is the least a hand-written post of the roughing file must do (a
+dict for the state, f-strings, no machine data); its rate is a ceiling for a post written
+in Python, and gecent's rate is also given as a ratio of it. Peak RSS is the
 child's own (``os.wait4``), on the repeated file and on the file once.
 
     python benchmarks/bench_throughput.py [--copies 50] [--repeat 3] [--scenario all] [--json]
@@ -27,6 +30,9 @@ import time
 from pathlib import Path
 
 ROUGHING = Path(__file__).resolve().parents[2] / "shared/corpus/creo/schruppen_1.ncl.1"
+REFERENCE_POST = Path(__file__).resolve().parent / "reference_post.py"
+
+
 def gecent_command() -> list[str]:
     """The installed ``gecent`` beside this interpreter, else on PATH, else the module."""
     beside = Path(sys.executable).parent / "gecent"
@@ -110,7 +116,15 @@ def main() -> int:
             [sys.executable, "-c", BARE_LOOP, str(source), str(tmp / "bare.out")], args.repeat
         )
         bare_rate = gotos / bare_seconds
-        print(f"{gotos:,} GOTO ({args.copies} copies); bare loop {bare_rate:,.0f} GOTO/s")
+        hand_seconds, _, _, _ = best(
+            [sys.executable, str(REFERENCE_POST), str(source), str(tmp / "hand.out")],
+            args.repeat,
+        )
+        hand_rate = gotos / hand_seconds
+        print(
+            f"{gotos:,} GOTO ({args.copies} copies); bare loop {bare_rate:,.0f} GOTO/s; "
+            f"hand-written post {hand_rate:,.0f} GOTO/s (ratio {hand_rate / bare_rate:.3f})"
+        )
         for name in names:
             options, target = SCENARIOS[name]
             command = [*gecent_command(), "post"]
@@ -134,13 +148,16 @@ def main() -> int:
                 "bare_goto_per_s": round(bare_rate),
                 "gecent_goto_per_s": round(rate),
                 "ratio": round(ratio, 3),
+                "hand_written_goto_per_s": round(hand_rate),
+                "ratio_to_hand_written": round(rate / hand_rate, 3),
                 "target": target,
                 "peak_rss_mb": round(peak, 1),
                 "peak_rss_single_mb": round(single_peak, 1),
                 "passed": passed,
             }
             print(
-                f"{name:<9} {rate:>10,.0f} GOTO/s  ratio {ratio:.3f} (target {target})  "
+                f"{name:<9} {rate:>10,.0f} GOTO/s  ratio {ratio:.3f} (target {target}; "
+                f"{rate / hand_rate:.3f} of hand-written)  "
                 f"peak {peak:.1f} MB (once: {single_peak:.1f} MB)  "
                 f"{'PASS' if passed else 'FAIL'}"
             )
