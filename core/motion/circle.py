@@ -14,14 +14,17 @@ a zero in-plane departure, or a last block that seems to reverse, goes out linea
 
 Modern controls (gecent options 252, 253; docs/modern-controls.md) take the whole arc, full
 circles included, in one block whose I, J, K are the signed offsets of the centre from the
-arc's start or the absolute centre, and the plane code names the machine's plane after SHUFFL.
+arc's start or the absolute centre, or whose R is the radius, and the plane code names the
+machine's plane after SHUFFL. A one-point circle whose end leaves the plane is a helix: one
+block with the normal axis moving too (option 261), or straight moves along it within a
+chord tolerance, as is every arc under option 262.
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable
 from dataclasses import dataclass
-from math import atan2, hypot, tau
+from math import acos, asin, atan2, ceil, cos, hypot, pi, sin, tau
 
 from gecent.core.absent import ABSENT
 from gecent.core.cl.records import Circle, Motion, MotionSubtype
@@ -50,6 +53,13 @@ class _Arc:
     radius: float
     start: tuple[float, float, float]
     end: tuple[float, float, float]
+    helix: bool = False  # the end leaves the plane of the start
+
+
+class CentreWords:
+    """Option 252: how a modern arc block states its centre."""
+
+    UNSIGNED, SIGNED, ABSOLUTE, RADIUS = 0, 1, 2, 3
 
 
 class CircularMotion:
@@ -77,8 +87,12 @@ class CircularMotion:
         self.exact_centre: tuple[float, float, float] = (0.0, 0.0, 0.0)  # the record's, unrounded
         self.axis_sense = 0.0  # the circle axis component along the plane normal
         self._reference = 0.0
-        self.centre_words = int(machine.number_option(252))  # 0 unsigned, 1 signed, 2 absolute
+        self.centre_words = int(machine.number_option(252))  # CentreWords
         self.whole = machine.number_option(253) == 1
+        self.helical = self.whole and machine.number_option(261) == 1
+        # option 262: arcs as chords within this tolerance (helices the control cannot
+        # take: within one step when it is 0)
+        self.chord_tolerance = machine.number_option(262)
         self.machine_plane: tuple[int | None, ...] = PLANE_CODES
         if self.centre_words:
             try:
@@ -123,13 +137,17 @@ class CircularMotion:
         self._reference = points[0][normal]
         if not self._planar(points, normal):
             return False
+        helix = False
         if len(points) == 1:
             # one point, as CAM systems write a circle: the arc's sense is the axis's,
             # counterclockwise about (i, j, k) (decision; DETDIR needs two points)
             if abs(self.axis_sense) <= self.epsilon:
                 return False
             tz = position.translation[normal]
-            if abs(position.previous_part[normal] - tz - self._reference) > self.epsilon:
+            # a start off the end's plane: a helix along the circle axis on a three-axis
+            # machine (decision); elsewhere not a circle, as the manual has it
+            helix = abs(position.previous_part[normal] - tz - self._reference) > self.epsilon
+            if helix and not self.three_axes:
                 return False
             clockwise: bool | None = self.axis_sense < 0
         else:
@@ -150,6 +168,7 @@ class CircularMotion:
             radius,
             (start[0], start[1], start[2]),
             (last[0] + tx, last[1] + ty, last[2] + tz),
+            helix,
         )
         return True
 
@@ -190,12 +209,63 @@ class CircularMotion:
             points.append((point[0], point[1], point[2]))
         points.append(arc.end)
         code = Code(int((10 + self.plane) * (-1 if ccw else 1)))
-        self._plane_block(arc.record)
-        if self.whole:
-            self._whole(arc, code, first, last)
+        try:
+            if self.chord_tolerance > 0 or (arc.helix and not self.helical):
+                self._chords(arc, first, last)
+                return
+            self._plane_block(arc.record)
+            if self.whole:
+                self._whole(arc, code, first, last)
+                return
+            for index, corner in enumerate(points):
+                self._segment(arc, corner, code, index, len(points), points)
+        except FatalError as error:
+            # the arc goes out when the record after it arrives: the error is the arc's
+            if error.where is None:
+                error.where = arc.record.where
+            raise
+
+    def _chords(self, arc: _Arc, first: tuple[float, float], last: tuple[float, float]) -> None:
+        """The arc (or helix) as straight moves: equal angles, each chord within the
+        tolerance of the arc (option 262, or one step) and no longer than option 4; the
+        normal axis moves in proportion; the last point is the record's own."""
+        u, v, normal = PLANES[self.plane]
+        tolerance = self.chord_tolerance if self.chord_tolerance > 0 else self.step
+        sweep = _sweep(first, last, arc.clockwise, self.step)
+        radius = arc.radius
+        widest = 2 * acos(1 - tolerance / radius) if tolerance < radius else pi
+        if radius > 0 and 2 * radius > self.depmax:  # a chord of 2r sin(a/2) within option 4
+            widest = min(widest, 2 * asin(min(1.0, self.depmax / (2 * radius))))
+        count = max(1, ceil(sweep / widest - 1e-9)) if radius > 0 else 1
+        c = self.centre_moved
+        begin = atan2(first[1], first[0])
+        turn = -sweep if arc.clockwise else sweep
+        rise = arc.end[normal] - arc.start[normal]
+        for index in range(1, count + 1):
+            if index == count:
+                point = arc.end
+            else:
+                angle = begin + turn * index / count
+                place = [0.0, 0.0, 0.0]
+                place[u] = c[u] + radius * cos(angle)
+                place[v] = c[v] + radius * sin(angle)
+                place[normal] = arc.start[normal] + rise * index / count
+                point = (place[0], place[1], place[2])
+            self._line(arc.record, point)
+
+    def _line(self, record: Motion, point: tuple[float, float, float]) -> None:
+        position = self.state.position
+        position.present_part[:3] = list(point)
+        position.present[:3] = [to_steps(value, self.step) for value in point]
+        departures = [position.present[a] - position.previous[a] for a in range(3)]
+        if not any(departures):
             return
-        for index, corner in enumerate(points):
-            self._segment(arc, corner, code, index, len(points), points)
+        block = Block.motion(
+            Code.LINEAR, record.number, tuple(departures), tuple(position.present[:3]), self.step
+        )
+        self.emit(block)
+        position.previous_part[:] = position.present_part
+        position.previous[:] = position.present
 
     def _plane_block(self, record: Motion) -> None:
         if self.plane == self.last_plane or not (self.three_axes or self.centre_words):
@@ -267,19 +337,26 @@ class CircularMotion:
         position.present_part[:3] = list(arc.end)
         position.present[:3] = [to_steps(value, step) for value in arc.end]
         departures = [position.present[a] - position.previous[a] for a in range(3)]
-        turn = atan2(last[1], last[0]) - atan2(first[1], first[0])
-        sweep = (-turn if arc.clockwise else turn) % tau
-        if hypot(last[0] - first[0], last[1] - first[1]) <= FULL_CIRCLE * step:
-            sweep = tau  # back where it started: a full circle (no CL arc has no length)
-        elif not any(departures):
+        sweep = _sweep(first, last, arc.clockwise, step)
+        if sweep < tau and not any(departures):
             return  # a short arc within one step: no move (RETURN = -1, 001 L4283-4290)
         block = Block.motion(
             code, arc.record.number, tuple(departures), tuple(position.present[:3]), step
         )
         centre = self._grid_centre(arc.radius / step, u, v)
-        for axis, value in zip((u, v), centre, strict=True):
-            offset = value - position.previous[axis] if self.centre_words == 1 else value
-            block.cells[8 + axis] = offset * step
+        if self.centre_words == CentreWords.RADIUS and sweep < tau:
+            # R: from the centre on the grid, never under half the chord (the control
+            # finds no centre then); negative beyond a half circle (Fanuc, LinuxCNC)
+            start = (position.previous[u], position.previous[v])
+            radius = hypot(start[0] - centre[0], start[1] - centre[1]) * step
+            chord = hypot(departures[u], departures[v]) * step
+            radius = max(radius, chord / 2)
+            block.cells[16] = -radius if sweep > pi else radius
+        else:
+            for axis, value in zip((u, v), centre, strict=True):
+                relative = self.centre_words in (CentreWords.SIGNED, CentreWords.RADIUS)
+                offset = value - position.previous[axis] if relative else value
+                block.cells[8 + axis] = offset * step
         block.radius = arc.radius
         block.sweep = sweep
         self.emit(block)
@@ -329,6 +406,17 @@ class CircularMotion:
             if cross:
                 return cross < 0
         return None
+
+
+def _sweep(
+    first: tuple[float, float], last: tuple[float, float], clockwise: bool, step: float
+) -> float:
+    """The angle an arc turns from ``first`` to ``last`` (offsets from the centre) in its
+    sense; an arc that ends where it began (within FULL_CIRCLE steps) is a full circle."""
+    if hypot(last[0] - first[0], last[1] - first[1]) <= FULL_CIRCLE * step:
+        return tau  # back where it started: a full circle (no CL arc has no length)
+    turn = atan2(last[1], last[0]) - atan2(first[1], first[0])
+    return (-turn if clockwise else turn) % tau
 
 
 def _quadrant(point: tuple[float, float], ccw: bool, *, first_point: bool) -> int:

@@ -10,7 +10,7 @@ into the control's command (CONTUR, core/feed/contour.py) and formats each regis
 from __future__ import annotations
 
 from collections.abc import Callable
-from math import asin, pi, radians
+from math import asin, hypot, pi, radians
 
 from gecent.core.absent import ABSENT, Absent
 from gecent.core.errors import Diagnostic, InputError, SourcePosition
@@ -267,7 +267,8 @@ class OutputElement:
             clockwise = (int(block.code) > 0) != self.mirrored[abs(int(block.code)) - 10]
             code = self.circular_codes.select(block.radius, clockwise)
             offsets = [float(v) for v in block.cells[8:11] if v is not ABSENT]
-            length = sum(o * o for o in offsets) ** 0.5  # R from the arc offsets
+            # R from the arc offsets (an R-word arc, option 252 = 3, has none)
+            length = sum(o * o for o in offsets) ** 0.5 if offsets else block.radius
         else:
             code = self.linear_codes.select(max(abs(s) for s in block.steps))
             length = sum((s * self.step) ** 2 for s in block.steps) ** 0.5
@@ -494,8 +495,9 @@ def _arc_length(block: Block, step: float) -> float:
     """The length of a quadrant segment: its chord over the radius gives the angle; a whole
     arc (option 253) knows its angle."""
     assert block.steps is not None and block.radius is not None
-    if block.sweep is not None:
-        return block.radius * block.sweep
+    if block.sweep is not None:  # a helix (option 261) rises along the plane's normal
+        rise = block.steps[CL_PLANES[abs(int(block.code)) - 10][2]] * step
+        return hypot(block.radius * block.sweep, rise)
     chord = sum((s * step) ** 2 for s in block.steps) ** 0.5
     ratio = min(1.0, chord / (2 * block.radius)) if block.radius else 0.0
     return 2 * block.radius * asin(ratio)

@@ -49,6 +49,7 @@ class ArcSpec:
     counterclockwise: bool  # in rs274's (first, second) axis order
     on_arc: tuple[Point, ...] = ()  # the record's other points, on the arc within ``slack``
     slack: float = 0.0  # INTOL/OUTTOL in force: how far APT lets those points stray
+    chords: bool = False  # the machine posts it as straight moves ending on the arc
 
 
 @dataclass(frozen=True, slots=True)
@@ -95,6 +96,9 @@ class _Reader:
         self.cycle: Cycle | None = None
         self.cycle_first_z: float | None = None
         self.circles = machine.number_option(9) == 1
+        # options 261/262: which arcs the post gives as straight moves along them
+        self.chords = machine.number_option(262) > 0
+        self.helical = machine.number_option(253) == 1 and machine.number_option(261) == 1
         self.tolerances = [0.0, 0.0]  # INTOL, OUTTOL (CL units scaled to the machine's)
 
     def machine_point(self, point: Iterable[float]) -> Point:
@@ -238,7 +242,10 @@ class _Reader:
         # may be offset from (TLRGT), so the points, not r, give it
         end = points[-1]
         radius = hypot(end[u] - centre[u], end[v] - centre[v])
-        spec = self._arc_spec(centre, radius, u, v, ccw, points[:-1])
+        normal = 3 - u - v
+        helix = len(points) == 1 and abs(start[normal] - end[normal]) > epsilon
+        chords = self.chords or (helix and not self.helical)
+        spec = self._arc_spec(centre, radius, u, v, ccw, points[:-1], chords)
         kind = self._kind()
         if spec is None:  # the plane is not one the machine has: the post goes linear
             for point in points:
@@ -247,7 +254,14 @@ class _Reader:
         self._target(points[-1], "feed", record, spec)
 
     def _arc_spec(
-        self, centre: Point, radius: float, u: int, v: int, ccw: bool, on_arc: list[Point]
+        self,
+        centre: Point,
+        radius: float,
+        u: int,
+        v: int,
+        ccw: bool,
+        on_arc: list[Point],
+        chords: bool,
     ) -> ArcSpec | None:
         mu, mv = self.axes[u], self.axes[v]
         if mu is None or mv is None:
@@ -271,6 +285,7 @@ class _Reader:
             ccw if same else not ccw,
             tuple(self.machine_point(p) for p in on_arc),
             max(self.tolerances),
+            chords,
         )
 
 

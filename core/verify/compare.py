@@ -90,7 +90,7 @@ class _Walk:
                     self.note(at, target.point)
                     reached = True
                     break
-                if target.arc is not None:
+                if target.arc is not None and not target.arc.chords:
                     self.result.mismatch = Mismatch(
                         target, move, "the arc does not end at the CL point"
                     )
@@ -141,6 +141,15 @@ class _Walk:
     def arc_problem(self, move: TapeMove, target: Target) -> str | None:
         arc = target.arc
         assert arc is not None
+        if arc.chords:  # straight moves along the arc (options 261/262): each ends on it
+            if move.kind == "arc":
+                return "an arc where the machine posts straight moves along it"
+            radius = radius_of(move.end, arc.centre, arc.plane)
+            if abs(radius - arc.radius) > self.tolerance:
+                return f"a move along the arc ends {abs(radius - arc.radius):.4f} off it"
+            if self.close(move.end, target.point):
+                self.result.arcs += 1
+            return None
         if move.kind != "arc" or move.centre is None:
             return "a straight move where the CL has an arc"
         self.result.arcs += 1
