@@ -264,6 +264,9 @@ class Run:
         machine = self.machine
         if machine.number_option(258) != 1:
             return
+        # a program for a modern control numbers its blocks as after SEQNO/ON (option 143;
+        # docs/decisions.md): by the record number, counting, or without repeats
+        self.state.numbering.switch_on(machine.number_option(143))
         self.text_block(Block(Code.INSERT, None, "%"))
         number = int(machine.number_option(259))
         if number > 0:

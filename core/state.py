@@ -172,10 +172,22 @@ class Sfm:
 
 @dataclass(slots=True)
 class Numbering:
-    """SEQNO: ``series`` gives the next N and the increment; ``off`` drops N words."""
+    """SEQNO: ``series`` gives the next N and the increment; ``off`` drops N words;
+    ``unrepeated``: an N equal to the last one punched is left out (option 143 = -1)."""
 
     series: tuple[int, int] | None = None
     off: bool = False
+    unrepeated: bool = False
+    last: int | None = None
+
+    def switch_on(self, source: float) -> None:
+        """SEQNO/ON (001 L26079-26095): option 143 says what numbers the blocks: 0 the CL
+        record number, +1 a number going up by one (from 1, or where a series stands),
+        -1 the record number without repeats."""
+        self.off = False
+        self.unrepeated = source == -1
+        if source == 1 and self.series is None:
+            self.series = (1, 1)
 
 
 @dataclass(slots=True)

@@ -106,14 +106,14 @@ def test_corrupted_tape_fails_and_names_the_block(plugins: PluginSet, tmp_path: 
     tape = tmp_path / "lathe.ngc"
     post_file(source, "fanuc-lathe", tape)
     text = tape.read_text()
-    assert "N18 G01 Z-40.\n" in text
-    tape.write_text(text.replace("N18 G01 Z-40.\n", "N18 G01 Z-40.01\n"))
+    assert "N8 G01 Z-40.\n" in text
+    tape.write_text(text.replace("N8 G01 Z-40.\n", "N8 G01 Z-40.01\n"))
     result = CliRunner().invoke(main, ["verify", str(tape), "--cl", str(source)])
     assert result.exit_code == 1, result.output
     assert "FAILED: first mismatch at CL" in result.output
     assert "lathe_fanuc.apt:18" in result.output  # the GOTO / -40, 15, 0
-    line = text.splitlines().index("N18 G01 Z-40.") + 1
-    assert f"tape line {line}: N18 G01 Z-40.01" in result.output
+    line = text.splitlines().index("N8 G01 Z-40.") + 1
+    assert f"tape line {line}: N8 G01 Z-40.01" in result.output
 
 
 @needs_rs274

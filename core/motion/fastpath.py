@@ -122,8 +122,9 @@ class FastLinear:
     def ready(self, special: bool) -> bool:
         """Nothing special in force (``special``: the run has a circle or cycle going): no
         rapid (but the move after a one-shot rapid on a machine without gear shifts), thread,
-        SFM, stop or END awaiting its FROM, OPSKIP, SEQNO series, pending S or M code,
-        unfinished program start, feed mode to change or note to report; a feed given."""
+        SFM, stop or END awaiting its FROM, OPSKIP, SEQNO/OFF, pending S or M code,
+        unfinished program start, feed mode to change or note to report, N without repeats;
+        a feed given."""
         state = self.state
         feed = state.feed
         modes = state.modes
@@ -141,8 +142,8 @@ class FastLinear:
             and not modes.ended
             and not modes.stopped
             and not state.skipping
-            and state.numbering.series is None
             and not state.numbering.off
+            and not state.numbering.unrepeated
             and state.pending.spindle is ABSENT
             and state.pending.m_code is ABSENT
             and (feed.programmed is not None or output.assumed_feed)
@@ -166,6 +167,7 @@ class FastLinear:
         previous_part = position.previous_part
         feed = state.feed
         pending = state.pending
+        numbering = state.numbering
         step = self.step
         units = self.units
         reach_x, reach_y, reach_z = self.reach
@@ -294,7 +296,14 @@ class FastLinear:
             output.cut_minutes += cut_minutes
             pending.rpm = None
             number = record.number
-            sequence = number % sequence_limit if number > sequence_limit else number
+            series = numbering.series
+            if series is not None:  # SEQNO's series, or counting blocks (option 143 = 1)
+                sequence, increment = series
+                numbering.series = (sequence + increment, increment)
+            else:
+                sequence = number
+            if sequence > sequence_limit:
+                sequence %= sequence_limit
             # the point reached: a two-axis machine's third axis stays where it was
             reached = (sx, sy, previous[2]) if two_axes else (sx, sy, sz)
             if placed:

@@ -128,7 +128,6 @@ class OutputElement:
         if block.code is Code.FROM and state.pending.m_code is not ABSENT:
             self.output(Block(Code.AUX_ONLY, block.record))  # "forced out" (001 L31370-31374)
         block.skipped = state.skipping
-        block.cells[1] = self._sequence_number(block)
         if block.code in MOTION_CODES:
             self._motion(block)
         elif block.code in POSITION_CODES:
@@ -163,6 +162,8 @@ class OutputElement:
         state.pending.rpm = None
         state.pending.spindle = ABSENT
         state.pending.m_code = ABSENT
+        # numbered last: a block the move needs first (G95, a plane) takes the N before it
+        block.cells[1] = self._sequence_number(block)
         self._emit(block)
 
     def _sequence_number(self, block: Block) -> float | Absent:
@@ -180,6 +181,10 @@ class OutputElement:
             sequence = block.record if block.record is not None else state.sequence
         if sequence > self.sequence_limit:
             sequence %= self.sequence_limit
+        if numbering.unrepeated and block.punched:
+            if sequence == numbering.last:
+                return ABSENT  # option 143 = -1: the redundant N is suppressed
+            numbering.last = sequence
         return float(-sequence if state.skipping else sequence)
 
     def flush_m(self, record: int | None = None) -> None:

@@ -6,7 +6,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from gecent.core.cl.records import Statement
-from gecent.core.errors import InputError
+from gecent.core.errors import Diagnostic, InputError
 from gecent.core.output.block import Block, Code
 
 if TYPE_CHECKING:
@@ -20,14 +20,27 @@ def seqno(run: Post, statement: Statement) -> None:
     words = statement.words()
     numbers = statement.numbers()
     if len(words) == 1 and words[0] in ("ON", "OFF") and not numbers:
-        numbering.off = words[0] == "OFF"
+        if words[0] == "OFF":
+            numbering.off = True
+        else:
+            numbering.switch_on(run.machine.number_option(143))
         return
     if words not in ((), ("INCR",)) or len(numbers) != (2 if words else 1):
         raise InputError("SEQNO expects n[,INCR,k], ON or OFF", statement.where)
     if any(v != int(v) or v < 0 for v in numbers):
         raise InputError("SEQNO expects whole numbers >= 0", statement.where)
     increment = int(numbers[1]) if words else 1
-    numbering.series = (int(numbers[0]), increment)
+    start = int(numbers[0])
+    if numbering.series is not None and start < numbering.series[0] and not numbering.off:
+        # the CL asks for it; a control's block search finds the first of the two
+        run.warn(
+            Diagnostic(
+                f"SEQNO/{start}: THE TAPE HAS REACHED N{numbering.series[0] - 1}; "
+                "BLOCK NUMBERS REPEAT",
+                statement.where,
+            )
+        )
+    numbering.series = (start, increment)
     numbering.off = False
 
 
