@@ -119,13 +119,18 @@ def test_bad_input_midway_leaves_no_file_at_all(tmp_path: Path) -> None:
 
 
 def test_a_character_the_punch_code_lacks_stops_the_run_with_no_file(tmp_path: Path) -> None:
-    """A modern tape's % has no EIA RS-244 code here: found while punching, mid-run."""
-    tape, eia = tmp_path / "p.ngc", tmp_path / "p.eia"
+    """An INSERT's ":" has no EIA RS-244 code: found while punching, mid-run."""
+    source = tmp_path / "in" / "p.apt"
+    source.parent.mkdir()
+    source.write_text(HELLO.read_text().replace("INSERT N001 M00", "INSERT (NOTE: STOP)"))
+    out = tmp_path / "out"
+    out.mkdir()
+    tape, eia = out / "p.ngc", out / "p.eia"
     code, _, err = run(
-        "post", str(HELLO), "--machine", "fanuc-mill", "-o", str(tape), "--punch", "eia", str(eia)
+        "post", str(source), "--machine", "fanuc-mill", "-o", str(tape), "--punch", "eia", str(eia)
     )
-    assert code == 2 and "tape block 1 ('%'): '%' has no EIA code" in err
-    assert names(tmp_path) == []
+    assert code == 2 and "('(NOTE:STOP)'): ':' has no EIA code" in err, err
+    assert names(out) == []
 
 
 def test_sinks_close_all_even_when_one_fails(tmp_path: Path) -> None:

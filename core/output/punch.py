@@ -4,6 +4,9 @@
 One byte per frame, bit 0 = channel 1 ... bit 7 = channel 8, parity included (EIA odd in
 channel 5, ASCII even in channel 8). Blanks and periods are never punched (001 L8849); each
 block ends with the end-of-block code (option 67: EIA channel 8, ASCII LF).
+
+A modern control's tape (decimal-point words, program frame: docs/modern-controls.md) keeps
+its periods and blanks, and in EIA its ``%`` lines are the End of Record code.
 """
 
 from __future__ import annotations
@@ -34,7 +37,9 @@ class Puncher:
     the start of a line is the end-of-record (rewind stop) code. An empty line is a blank
     card: 72 frames of blank tape (feed holes only), the option-11 filler after END."""
 
-    def __init__(self, code: str, leader: str = "(", tmark: str = "=") -> None:
+    def __init__(
+        self, code: str, leader: str = "(", tmark: str = "=", *, modern: bool = False
+    ) -> None:
         if code not in CODES:
             raise InputError(f"unknown tape code {code!r} (eia or ascii)")
         codes = table(code)
@@ -46,12 +51,18 @@ class Puncher:
         self.leader_frame = bytes([codes["LEADER"]])
         self.rewind_stop = bytes([codes["REWIND_STOP"]])
         characters = {k: v for k, v in codes.items() if len(k) == 1 and ord(k) < 256}
+        self.not_punched = NOT_PUNCHED
+        if modern:
+            characters[" "] = codes["SPACE"]
+            characters.setdefault("%", codes["REWIND_STOP"])  # EIA: End of Record
+            self.not_punched = ""
+        self.characters = frozenset(characters)
         frames = bytearray(range(256))
         for character, frame in characters.items():
             frames[ord(character)] = frame
         self.frames = bytes(frames)
         # deleting every punchable character leaves exactly the ones that have no code
-        self.unpunchable = str.maketrans("", "", "".join(characters) + NOT_PUNCHED)
+        self.unpunchable = str.maketrans("", "", "".join(characters) + self.not_punched)
         self.lines = 0
 
     def frames_of(self, line: str) -> bytes:
@@ -70,7 +81,7 @@ class Puncher:
                 f"tape block {self.lines} ({line!r}): {missing[0]!r} has no "
                 f"{self.code.upper()} code"
             )
-        body = line.encode("latin-1").translate(self.frames, NOT_PUNCHED.encode("ascii"))
+        body = line.encode("latin-1").translate(self.frames, self.not_punched.encode("ascii"))
         return prefix + body + self.end_of_block
 
 
@@ -81,7 +92,9 @@ def punch(lines: Iterable[str], code: str, leader: str = "(", tmark: str = "=") 
     return b"".join(puncher.frames_of(line) for line in lines)
 
 
-def unpunch(frames: bytes, code: str, leader: str = "(", tmark: str = "=") -> list[str]:
+def unpunch(
+    frames: bytes, code: str, leader: str = "(", tmark: str = "=", *, modern: bool = False
+) -> list[str]:
     """Read frames back into tape image lines (for tests and for checking a tape).
 
     A run of leader frames becomes a line of the leader stand-in, each card of blank tape
@@ -90,6 +103,9 @@ def unpunch(frames: bytes, code: str, leader: str = "(", tmark: str = "=") -> li
     character of this code (ASCII's rewind stop is "%")."""
     codes = table(code)
     characters = {v: k for k, v in reversed(list(codes.items())) if len(k) == 1}
+    if modern:  # blanks between words, and EIA's End of Record for "%"
+        characters.setdefault(codes["SPACE"], " ")
+        characters.setdefault(codes["REWIND_STOP"], "%")
     end_of_block, leader_frame = codes["EOB"], codes["LEADER"]
     blank, rewind_stop = codes["BLANK_TAPE"], codes["REWIND_STOP"]
     lines: list[str] = []

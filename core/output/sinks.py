@@ -25,6 +25,7 @@ from gecent.core.output.block import Block
 from gecent.core.output.files import AtomicFile
 from gecent.core.output.jsonlines import block_record
 from gecent.core.output.marks import stand_in
+from gecent.core.output.modern import modern_output
 from gecent.core.output.punch import Puncher
 from gecent.core.output.tape import tape_line
 from gecent.core.plugins import PluginSet
@@ -186,6 +187,8 @@ class Sinks:
         self.sinks: list[Sink] = []
         self.line_sinks: list[LineSink] = []  # all of them when the fast path needs no Block
         self.partno = ""  # the first PARTNO's text: the listing's page heading
+        # the characters the punch can carry (None: no punch; the tape image is ASCII)
+        self.punch_characters: frozenset[str] | None = None
         self.closed = False
         for sink in sinks or []:
             self.add(sink)
@@ -250,8 +253,17 @@ def output_sinks(
             raise NotYetSupported(f"printout GEOUT{layout} (option 164 = {layout})")
         writer = printout.listing(machine, lambda: sinks.partno)
     puncher = (
-        Puncher(punch_to[0], stand_in(machine, 64), stand_in(machine, 65)) if punch_to else None
+        Puncher(
+            punch_to[0],
+            stand_in(machine, 64),
+            stand_in(machine, 65),
+            modern=modern_output(machine),
+        )
+        if punch_to
+        else None
     )
+    if puncher is not None:
+        sinks.punch_characters = puncher.characters
     try:
         sinks.add(TapeSink(tape))
         if writer is not None and listing is not None:
