@@ -5,10 +5,14 @@ from __future__ import annotations
 import io
 import json
 import os
+import shutil
 import signal
 import sys
+import tempfile
 import threading
 from collections.abc import Callable, Iterable, Iterator
+from contextlib import contextmanager
+from dataclasses import replace
 from functools import wraps
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, TypeVar
@@ -23,6 +27,7 @@ from gecent.core.errors import (
     Diagnostic,
     GecentError,
     InputError,
+    SourcePosition,
 )
 from gecent.core.families import FAMILIES, MachinePack
 from gecent.core.machine.definition import MachineDefinition
@@ -194,7 +199,7 @@ def machine_show(key: str, show_all: bool, as_json: bool) -> None:
 
 
 @main.command()
-@click.argument("input_path", metavar="INPUT", type=click.Path(dir_okay=False))
+@click.argument("input_path", metavar="INPUT", type=click.Path(dir_okay=False, allow_dash=True))
 @click.option(
     "--machine",
     "machine_key",
@@ -206,7 +211,8 @@ def machine_show(key: str, show_all: bool, as_json: bool) -> None:
     "--output",
     "tape_path",
     type=click.Path(dir_okay=False),
-    help="Tape image file (default: INPUT's name with .tape, in the current folder).",
+    help="Tape image file (default: INPUT's name with .tape, in the current folder; "
+    "stdin.tape when INPUT is - for standard input).",
 )
 @click.option(
     "--listing",
@@ -258,8 +264,37 @@ def post(
     Outputs go where they are named; a tape with no -o goes to the current folder as
     INPUT's name with .tape, the listing beside the tape with .lis (on machines whose tape
     is G-code for a modern control, only when --listing asks). Nothing is written into the
-    input's folder unless named there."""
+    input's folder unless named there. INPUT - reads the CL file from standard input."""
     _terminate_cleanly()
+    if input_path == "-":
+        with _standard_input() as spooled:
+            try:
+                _post(
+                    *(spooled, machine_key, tape_path or "stdin.tape", listing_path),
+                    *(punch_to, as_json, max_segments, general_path),
+                )
+            except GecentError as exc:  # it names standard input "-", not the spool
+                where = getattr(exc, "where", None)
+                if isinstance(where, SourcePosition) and where.file == spooled:
+                    exc.where = replace(where, file="-")  # type: ignore[attr-defined]
+                raise
+        return
+    _post(
+        *(input_path, machine_key, tape_path, listing_path),
+        *(punch_to, as_json, max_segments, general_path),
+    )
+
+
+def _post(
+    input_path: str,
+    machine_key: str | None,
+    tape_path: str | None,
+    listing_path: str | None,
+    punch_to: tuple[str, str] | None,
+    as_json: bool,
+    max_segments: int,
+    general_path: bool,
+) -> None:
     plugins = _plugins()
     override = _override(plugins, machine_key)
     tape_target = Path(tape_path) if tape_path else Path(Path(input_path).stem + ".tape")
@@ -273,7 +308,7 @@ def post(
         )
 
     def report(diagnostic: Diagnostic) -> None:
-        click.echo(str(diagnostic), err=True)
+        click.echo(_shown(str(diagnostic), input_path), err=True)
 
     run_post(
         input_path,
@@ -285,6 +320,27 @@ def post(
         max_segments,
         fast=not general_path,
     )
+
+
+STDIN_SPOOL = "gecent-stdin"
+
+
+@contextmanager
+def _standard_input() -> Iterator[str]:
+    """Standard input spooled to a temporary file (the post reads the CL file twice: the
+    first pass for MACHIN, then the run), removed afterwards."""
+    with tempfile.TemporaryDirectory(prefix="gecent-") as folder:
+        spooled = os.path.join(folder, STDIN_SPOOL)
+        with open(spooled, "wb") as handle:
+            shutil.copyfileobj(sys.stdin.buffer, handle)
+        yield spooled
+
+
+def _shown(message: str, input_path: str) -> str:
+    """A message about the spooled standard input names it "-"."""
+    if os.path.basename(input_path) == STDIN_SPOOL:
+        return message.replace(input_path, "-")
+    return message
 
 
 def _terminate_cleanly() -> None:

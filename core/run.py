@@ -41,13 +41,14 @@ from gecent.core.motion.control_cycles import ControlCycles
 from gecent.core.motion.cycles import Cycle, cycle_legs
 from gecent.core.motion.fastpath import FastLinear
 from gecent.core.motion.guard import DEFAULT_MAX_SEGMENTS, CoordinateGuard, check_numbers
-from gecent.core.motion.linear import LinearMotion, godlta_delta
+from gecent.core.motion.linear import LinearMotion, godlta_delta, path_length
 from gecent.core.motion.positioning import PositioningMotion
 from gecent.core.motion.rotary import RotaryElement
 from gecent.core.motion.thread import ThreadElement
 from gecent.core.output.block import Block, Code
 from gecent.core.output.element import OutputElement
 from gecent.core.output.format import FormatOverflow
+from gecent.core.output.modern import modern_output
 from gecent.core.output.sinks import CollectSink, Ending, Sinks
 from gecent.core.plugins import PluginSet, get_plugins, macfun_handler
 from gecent.core.reinstate import restat
@@ -100,6 +101,8 @@ class Run:
         self._control_cycles: ControlCycles | None = None
         self.control_cycles: ControlCycles | None = None  # the control runs the cycle in force
         self._guard: CoordinateGuard | None = None
+        # a modern control's CL file with no UNITS before its first move is warned about
+        self._units_checked = not modern_output(machine)
         self.state.max_segments = max_segments
         self._statements = handlers()
         self._statements["UNITS"] = lambda run, statement: run.units.set_units(statement)
@@ -308,7 +311,7 @@ class Run:
 
     def _fast_path(self) -> FastLinear | None:
         """The fast path (core/motion/fastpath.py), when nothing special is in force."""
-        if not self.use_fast_path or self._output is None:
+        if not self.use_fast_path or self._output is None or not self._units_checked:
             return None  # (the general path makes the elements, with their errors)
         fast = self._fast
         if fast is None:
@@ -342,6 +345,10 @@ class Run:
                 return
             self._circle.finish()  # any other record ends the circle (001 L4749-4781)
         if isinstance(record, Motion):
+            if not self._units_checked:
+                self._units_checked = True
+                if not self.units.stated:
+                    self.warn(self.units.unstated(record.where))
             self._motion_record(record)
         elif isinstance(record, Statement):
             handler = self._statements.get(record.major)
@@ -428,7 +435,7 @@ class Run:
         if record.subtype is not MotionSubtype.FROM:
             feed = self.state.feed
             if feed.rapid_requested or feed.rapid_mode:
-                self.rapid.motion(self._path_length(record))
+                self.rapid.motion(path_length(self.state.position, record))
         if self.circle.begin(record):
             return
         self.motion.record(record)
@@ -472,25 +479,8 @@ class Run:
         if rapid:
             self.rapid.request()
         if feed.rapid_requested or feed.rapid_mode:
-            self.rapid.motion(self._path_length(leg))
+            self.rapid.motion(path_length(self.state.position, leg))
         self.motion.record(leg)
-
-    def _path_length(self, record: Motion) -> float:
-        """PLENTH: the length of the whole record's path from the previous point."""
-        position = self.state.position
-        tx, ty, tz = position.translation
-        at = position.previous_part[:3]
-        total = 0.0
-        for point in record.points:
-            if record.subtype is MotionSubtype.GODLTA:
-                delta = godlta_delta(point)
-                nxt = [at[k] + delta[k] for k in range(3)]
-            else:
-                nxt = [point[0] + tx, point[1] + ty, point[2] + tz]
-            total += sum((nxt[k] - at[k]) ** 2 for k in range(3)) ** 0.5
-            at = nxt
-        return total
-
 
 
 AFTER_END = "END OR RESET HAS NOT BEEN FOLLOWED BY A FROM POINT."  # comment 47 (L34080)

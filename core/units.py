@@ -15,7 +15,7 @@ from __future__ import annotations
 from dataclasses import replace
 
 from gecent.core.cl.records import Arelem, Circle, Motion, MotionSubtype, Record, Statement, Word
-from gecent.core.errors import InputError
+from gecent.core.errors import Diagnostic, InputError, SourcePosition
 from gecent.core.machine.definition import MachineDefinition
 
 MILLIMETRES = {"MM": 1.0, "CM": 10.0, "INCHES": 25.4, "FEET": 304.8}
@@ -27,11 +27,12 @@ _ARELEM_LENGTHS = {4, 5, 6}  # INTOL, OUTTOL, CUTTER (001 L3544-3615)
 class UnitScale:
     """The factor from the CL file's current unit to the machine's (1.0 until UNITS)."""
 
-    __slots__ = ("factor", "machine_mm")
+    __slots__ = ("factor", "machine_mm", "stated")
 
     def __init__(self, machine: MachineDefinition) -> None:
         self.machine_mm = 1.0 if machine.number_option(138) == 1 else 25.4
         self.factor = 1.0
+        self.stated = False  # a UNITS statement has been read
 
     def set_units(self, statement: Statement) -> None:
         """UNITS/MM|CM|INCHES|FEET: later lengths are in that unit."""
@@ -43,6 +44,17 @@ class UnitScale:
                 statement.where,
             )
         self.factor = MILLIMETRES[words[0]] / self.machine_mm
+        self.stated = True
+
+    def unstated(self, where: SourcePosition | None) -> Diagnostic:
+        """The first move of a CL file that never said UNITS: its lengths are taken in the
+        machine's unit, which a CAM system's file in the other unit makes 25.4 times wrong."""
+        unit = "MILLIMETRES" if self.machine_mm == 1.0 else "INCHES"
+        return Diagnostic(
+            f"NO UNITS STATEMENT BEFORE THE FIRST MOVE: THE CL FILE IS TAKEN IN {unit}, "
+            "THE MACHINE'S UNIT",
+            where,
+        )
 
     def length(self, value: float) -> float:
         return value * self.factor

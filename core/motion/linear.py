@@ -171,3 +171,19 @@ def _truncated_to_thousandths(part: tuple[int, ...], carry: list[int]) -> tuple[
         carry[axis] = wanted - kept
         out.append(kept)
     return tuple(out)
+
+
+def path_length(position: Position, record: Motion) -> float:
+    """PLENTH: the length of the whole record's path from the previous point."""
+    tx, ty, tz = position.translation
+    at = position.previous_part[:3]
+    total = 0.0
+    for point in record.points:
+        if record.subtype is MotionSubtype.GODLTA:
+            delta = godlta_delta(point)
+            nxt = [at[k] + delta[k] for k in range(3)]
+        else:
+            nxt = [point[0] + tx, point[1] + ty, point[2] + tz]
+        total += sum((nxt[k] - at[k]) ** 2 for k in range(3)) ** 0.5
+        at = nxt
+    return total
