@@ -3,8 +3,9 @@ and its report (docs/verify.md)."""
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
+from gecent.core.cl.records import Statement
 from gecent.core.cl.stream import read_cl
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.machine.selection import apply_machin_options, first_machin, resolve_machine
@@ -24,10 +25,11 @@ class Verification:
     tolerance: float  # in the tape's units
     unit: str
     tape_lines: list[str]
+    unfollowed: list[Statement] = field(default_factory=list)  # CL motion nobody follows
 
     @property
     def passed(self) -> bool:
-        return self.comparison is not None and self.comparison.passed
+        return self.comparison is not None and self.comparison.passed and not self.unfollowed
 
     def report(self) -> list[str]:
         unit = self.unit
@@ -41,12 +43,24 @@ class Verification:
             ]
         result = self.comparison
         deviation = "  ".join(f"{AXIS_NAMES[i]} {result.deviation[i]:.4f}" for i in range(3))
+        tools = self.interpretation.tools
         lines = [
             f"verify: {result.moves} tape moves (rs274), {result.targets} CL points, "
             f"{result.arcs} arcs and {result.feeds} feeds checked, tolerance "
             f"{self.tolerance:g} {unit}",
+            f"tools: {', '.join(f'T{t}' for t in tools) or 'none'} (diameter and length 0: "
+            "the programmed path is compared)",
             f"max deviation ({unit}): {deviation}",
         ]
+        if self.unfollowed:
+            first = self.unfollowed[0]
+            more = len(self.unfollowed) - 1
+            lines.append(
+                f"verify: FAILED: the CL file moves the tool by {first.major} at {first.where}"
+                + (f" (and {more} more such records)" if more else "")
+                + ", which the post does not follow: the tape cannot be shown to follow the CL"
+            )
+            return lines
         mismatch = result.mismatch
         if mismatch is None:
             lines.append("verify: passed: every CL point reached in order")
@@ -100,4 +114,4 @@ def verify(
     decimals = min(4, fmt.right) if fmt is not None else 4
     feed_tolerance = 0.5 * 10.0**-decimals + 1e-9
     comparison = compare(path, reading.moves, tolerance, feed_tolerance)
-    return Verification(machine, reading, comparison, tolerance, unit, lines)
+    return Verification(machine, reading, comparison, tolerance, unit, lines, path.unfollowed)

@@ -37,6 +37,9 @@ from gecent.core.statements.feed import scan_fedrat
 from gecent.core.units import UnitScale
 
 Point = tuple[float, float, float]
+# CL records that move the tool in ways neither the post nor verify follows yet: a file with
+# one of them fails verification, since the tape cannot be shown to follow it
+UNFOLLOWED_MOTION = frozenset({"NURBS", "KNOT", "CNTRL", "SPLINE", "BSPLINE"})
 # rs274's ARC_FEED plane axes, (first, second) machine axis indices
 PLANE_AXES = {"XY": (0, 1), "XZ": (2, 0), "YZ": (1, 2)}
 
@@ -71,6 +74,7 @@ class ClPath:
     targets: list[Target] = field(default_factory=list)
     compared: tuple[int, ...] = (0, 1, 2)  # machine axes the CL path gives
     notes: list[Diagnostic] = field(default_factory=list)
+    unfollowed: list[Statement] = field(default_factory=list)  # UNFOLLOWED_MOTION records
 
 
 class _Reader:
@@ -144,7 +148,9 @@ class _Reader:
 
     def _statement(self, statement: Statement) -> None:
         major = statement.major
-        if major == "UNITS":
+        if major in UNFOLLOWED_MOTION:
+            self.path.unfollowed.append(statement)
+        elif major == "UNITS":
             self.units.set_units(statement)
         elif major == "RAPID":
             self.rapid_once = True

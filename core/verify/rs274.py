@@ -65,6 +65,7 @@ class Interpretation:
     units: str  # "MM" or "INCHES"
     error: str | None  # rs274's message when it stopped, with the tape line it names
     error_line: int | None
+    tools: tuple[int, ...] = ()  # the tool table handed to rs274
 
 
 def rs274_path() -> str | None:
@@ -90,6 +91,27 @@ def numbered_copy(tape: str, *, diameter: bool) -> str:
     return "\n".join(lines) + "\n"
 
 
+_COMMENT = re.compile(r"\([^)]*\)|;.*$")
+_TOOL_WORDS = re.compile(r"(?<![A-Z])[TDH]\s*(\d+)", re.IGNORECASE)
+
+
+def tool_numbers(tape: str) -> tuple[int, ...]:
+    """The tools a tape names in its T, D and H words (comments left out), each once."""
+    found: set[int] = set()
+    for line in tape.splitlines():
+        text = _COMMENT.sub("", line)
+        found.update(int(number) for number in _TOOL_WORDS.findall(text))
+    found.discard(0)
+    return tuple(sorted(found))
+
+
+def tool_table(tools: tuple[int, ...]) -> str:
+    """rs274's tool table: every tool the tape names, diameter and length 0, so that G41/G42
+    and G43 leave the programmed path as it is (the CL file gives the tool's centre path:
+    the comparison is of the programmed path; docs/decisions.md)."""
+    return "".join(f"T{tool} P{tool} D0 Z0 ;gecent verify\n" for tool in tools)
+
+
 def interpret(tape_path: str, *, diameter: bool = False, timeout: float = 600.0) -> Interpretation:
     program = rs274_path()
     if program is None:
@@ -98,18 +120,23 @@ def interpret(tape_path: str, *, diameter: bool = False, timeout: float = 600.0)
         tape = Path(tape_path).read_text(encoding="ascii", errors="replace")
     except OSError as exc:
         raise InputError(f"cannot read the tape: {exc.strerror}", None) from None
+    tools = tool_numbers(tape)
     with tempfile.TemporaryDirectory(prefix="gecent-verify-") as folder:
         copy = Path(folder) / "tape.ngc"
         copy.write_text(numbered_copy(tape, diameter=diameter), encoding="ascii")
+        table = Path(folder) / "tools.tbl"
+        table.write_text(tool_table(tools), encoding="ascii")
         done = subprocess.run(
-            [program, "-g", str(copy)],
+            [program, "-g", "-t", str(table), str(copy)],
             capture_output=True,
             text=True,
             timeout=timeout,
             check=False,
             stdin=subprocess.DEVNULL,
         )
-    return parse_canon(done.stdout + done.stderr, done.returncode)
+    reading = parse_canon(done.stdout + done.stderr, done.returncode)
+    reading.tools = tools
+    return reading
 
 
 def _numbers(text: str) -> list[float]:
