@@ -87,9 +87,12 @@ class Spindle:
 
 @dataclass(slots=True)
 class Tool:
-    """TOOL (the loaded tool number) and FORK (a tool has been loaded)."""
+    """TOOL (the loaded tool number) and FORK (a tool has been loaded); on a modern control
+    (option 263) the tool's offset number and whether its G43 H is still to go out."""
 
     number: float | None = None
+    offset: int | None = None
+    length_pending: bool = False
 
 
 @dataclass(slots=True)
@@ -204,6 +207,7 @@ class PostState:
     threading: Threading = field(default_factory=Threading)
     sfm: Sfm = field(default_factory=Sfm)
     conditions: StateVector = field(default_factory=StateVector)  # STATE(12), option 145
+    header: list[str] = field(default_factory=list)  # comments before the start block (264)
     sequence: int = 0  # SEQCTR: the CL record number of the record being processed
     skipping: bool = False  # SKPFLG (OPSKIP)
     max_segments: int = 100_000  # gecent's bound on one CL move's blocks (0: none)

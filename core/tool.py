@@ -16,9 +16,14 @@ docs/research/spindle-tool.md and docs/research/lathe-tools.md.
 On a positioning machine (TOOLGP) the T goes out at once with the cycle-off G code TABLEG(1)
 in a CODE -1 block, and the output adds the spindle command to it (option 1 = 1).
 
-Tool-length corrections (LENGTH, ADJUST), turret corrective moves (NOW, NEXT), TURRET on
-a positioning machine and T merged into the next motion block (option 1 = 2) are not built
-and stop the run with an error naming them.
+A modern control (gecent option 263, docs/modern-controls.md) numbers the tool's offsets:
+ADJUST h, OFSETL k or the tool number. A mill (263 = 1) gives it as H with G43 in the first
+move after the tool change and as D with CUTCOM; LOADTL LENGTH is accepted, since the control
+holds the lengths. A lathe (263 = 2) punches T as station and offset, two digits each.
+
+The manual's tool-length corrections (LENGTH, ADJUST without option 263), turret corrective
+moves (NOW, NEXT), TURRET on a positioning machine and T merged into the next motion block
+(option 1 = 2) are not built and stop the run with an error naming them.
 """
 
 from __future__ import annotations
@@ -29,6 +34,12 @@ from gecent.core.cl.records import Statement, Word
 from gecent.core.errors import Diagnostic, InputError, NotYetSupported, SourcePosition
 from gecent.core.output.block import Block, Code
 from gecent.core.output.element import OutputElement
+from gecent.core.output.modern import (
+    LATHE_OFFSETS,
+    MILL_OFFSETS,
+    TOOL_LENGTH_ON,
+    TOOL_LENGTH_REGISTER,
+)
 from gecent.core.state import T_CODE, PostState
 
 TOOL_CHANGE, TURRET_INDEX, FRONT_TURRET, REAR_TURRET = 7, 8, 29, 30
@@ -59,10 +70,37 @@ class ToolElement:
         self.position: int | None = None  # FFRSTL: where the magazine or turret stands
 
     def statement(self, statement: Statement) -> None:
-        """TOOLNO/n[, OFSETL, k][, CLW|CCLW]."""
-        tool, words, offset = self._parse(statement, allowed=("OFSETL", "CLW", "CCLW"))
-        t_code = tool if offset is None else tool * 100 + offset
+        """TOOLNO/n[, OFSETL, k][, CLW|CCLW], and on a modern control [, LENGTH, l][, ADJUST, h]."""
+        offsets = int(self.state.machine.number_option(263))
+        allowed = ("OFSETL", "CLW", "CCLW") + (("LENGTH", "ADJUST") if offsets else ())
+        tool, words, offset = self._parse(statement, allowed=allowed)
+        if not offsets:
+            t_code = tool if offset is None else tool * 100 + offset
+            self._load(statement, tool, t_code, words, index_cell=None)
+            return
+        adjust = _value_after(statement, "ADJUST")
+        _value_after(statement, "LENGTH")  # checked; the control holds the tool's length
+        number = adjust if adjust is not None else offset if offset is not None else tool
+        if offsets == LATHE_OFFSETS:
+            if tool > 99:
+                t_code = tool  # station and offset already (T0101 as LOADTL/101)
+            elif number > 99:
+                raise InputError(
+                    f"{statement.major} offset {number} does not fit the two digits of T",
+                    statement.where,
+                )
+            else:
+                t_code = tool * 100 + number
+        else:
+            t_code = tool
         self._load(statement, tool, t_code, words, index_cell=None)
+        machine = self.state.machine
+        self.state.tool.offset = number
+        self.state.tool.length_pending = (
+            offsets == MILL_OFFSETS
+            and machine.g_code(TOOL_LENGTH_ON) is not None
+            and machine.registers.formats[TOOL_LENGTH_REGISTER] is not None
+        )
 
     def turret(self, statement: Statement) -> None:
         """TURRET/t[, p][, OFSETL, k][, FRONT|REAR][, CLW|CCLW]: COMTAT's T word."""
@@ -70,7 +108,17 @@ class ToolElement:
         tool, words, offset = self._parse(statement, allowed=allowed, positions=2)
         numbers = _plain_numbers(statement)
         position = int(numbers[1]) if len(numbers) > 1 else tool
-        t_code = self._comtat(tool, position, offset or 0, statement.where)
+        if self.state.machine.number_option(263) == LATHE_OFFSETS:
+            # a modern lathe: the station, then the offset (OFSETL, else the tool number)
+            number = offset if offset is not None else tool
+            if position > 99 or number > 99:
+                raise InputError(
+                    f"TURRET station {position} and offset {number} must be 0-99 each",
+                    statement.where,
+                )
+            t_code = position * 100 + number
+        else:
+            t_code = self._comtat(tool, position, offset or 0, statement.where)
         for word in words:
             if word in _TURRETS:
                 self._store(_TURRETS[word], statement.where)
@@ -83,7 +131,7 @@ class ToolElement:
         where = statement.where
         words = [a.name for a in statement.args if isinstance(a, Word)]
         for word in words:
-            if word in ("LENGTH", "ADJUST", "NOW", "NEXT"):
+            if word in ("LENGTH", "ADJUST", "NOW", "NEXT") and word not in allowed:
                 raise NotYetSupported(f"{statement.major}/{word}", where)
             if word not in allowed:
                 raise InputError(
@@ -179,8 +227,11 @@ class ToolElement:
         self.output.store_cell(cell, self.warn, where)
 
 
+_VALUED = ("OFSETL", "ADJUST", "LENGTH")  # words whose value follows them
+
+
 def _plain_numbers(statement: Statement) -> list[float]:
-    """The numbers not taken by OFSETL, k."""
+    """The numbers not taken by OFSETL, k (or ADJUST, h and LENGTH, l)."""
     numbers: list[float] = []
     args = statement.args
     skip = False
@@ -189,10 +240,34 @@ def _plain_numbers(statement: Statement) -> list[float]:
             skip = False
             continue
         if isinstance(arg, Word):
-            skip = arg.name == "OFSETL" and index + 1 < len(args)
+            skip = arg.name in _VALUED and index + 1 < len(args)
             continue
         numbers.append(float(arg))
     return numbers
+
+
+def _value_after(statement: Statement, name: str) -> int | None:
+    """ADJUST, h: a whole offset number 0-99 (or LENGTH, l: a length, checked positive)."""
+    args = statement.args
+    for index, arg in enumerate(args):
+        if isinstance(arg, Word) and arg.name == name:
+            if index + 1 >= len(args) or isinstance(args[index + 1], Word):
+                raise InputError(f"{statement.major} {name} expects a value", statement.where)
+            value = float(args[index + 1])  # type: ignore[arg-type]
+            if name == "LENGTH":
+                if not value > 0:
+                    raise InputError(
+                        f"{statement.major} LENGTH expects a length > 0, found {value:g}",
+                        statement.where,
+                    )
+                return None
+            if value < 0 or value != int(value) or value > 99:
+                raise InputError(
+                    f"{statement.major} {name} expects an offset number 0-99, found {value:g}",
+                    statement.where,
+                )
+            return int(value)
+    return None
 
 
 def _offset(statement: Statement) -> int | None:

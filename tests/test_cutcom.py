@@ -74,9 +74,17 @@ def test_a_code_the_machine_lacks_is_reported_and_nothing_is_output() -> None:
 
 
 @pytest.mark.parametrize(
-    "statement", ["CUTCOM/ON", "CUTCOM/LEFT,RIGHT", "CUTCOM/LEFT,1", "CUTCOM/3"]
+    "statement",
+    ["CUTCOM/ON", "CUTCOM/LEFT,RIGHT", "CUTCOM/OFF,1", "CUTCOM/3", "CUTCOM/LEFT,XYPLAN,YZPLAN"],
 )
 def test_other_forms_name_what_is_expected(statement: str) -> None:
     """The manual names no CUTCOM/ON (APT's "plus"?): it is refused, like any other form."""
-    with pytest.raises(InputError, match="CUTCOM expects one of LEFT, RIGHT, OFF, PLUS or MINUS"):
+    with pytest.raises(InputError, match="CUTCOM expects LEFT or RIGHT"):
         post([statement], compensating())
+
+
+def test_apt_iv_plane_and_offset_number_are_read() -> None:
+    """CUTCOM/LEFT,XYPLAN,1 (APT IV, NX): the plane is the one the arcs name; the offset
+    number is a modern control's D (option 263), which this machine has not."""
+    result = post(["CUTCOM/LEFT,XYPLAN,1"], compensating())
+    assert tape_lines(result.blocks) == tape_lines(post(["CUTCOM/LEFT"], compensating()).blocks)

@@ -100,11 +100,12 @@ def test_linuxcnc_mill_program(plugins: PluginSet, tmp_path: Path) -> None:
         "%",
         "(BRACKET [4711] OP10)",
         "(CLAMP THE PART)",
-        "G17 G21 G90 G94 G40 G80",
+        "(T3)",  # the tool list (option 264)
+        "G17 G21 G90 G94 G40 G49 G80 G54",
         "N1 T03 M06",
         "N2 S1200 M03",
         "N3 M08",  # forced out by the FROM (001 L31370-31374)
-        "N4 G00 X10. Y5. Z20.",
+        "N4 G00 G43 X10. Y5. Z20. H3",  # tool length with the first move (option 263)
         "N5 G01 Z-1. F250.",
         "N6 G02 X20. Y5. I5.",
         "N7 G03 X20. Y5. I-5.",
@@ -139,14 +140,15 @@ def test_fanuc_mill_frame(plugins: PluginSet, tmp_path: Path) -> None:
 
 def test_fanuc_lathe_example(plugins: PluginSet) -> None:
     """The lathe example: G18, X in diameters, I/K signed radius offsets, G95 feeds,
-    G03 for the convex fillet and G02 for the concave one."""
+    G03 for the convex fillet and G02 for the concave one; T0101 from LOADTL/1."""
     lines = tape_lines(post(str(EXAMPLES / "lathe_fanuc.apt"), plugins).blocks)
     assert lines == [
         "%",
         "O2000",
         "(SHAFT END OP10)",
-        "G18 G21 G90 G94 G40 G80",
-        "N1 T0001",
+        "(T1)",
+        "G18 G21 G90 G94 G40 G80 G54",
+        "N1 T0101",  # station 1, offset 1 (option 263 = 2)
         "N2 S1200 M03",
         "N3 M08",
         "N4 G00 X20. Z2.",
@@ -192,7 +194,7 @@ def test_control_cycles(plugins: PluginSet, tmp_path: Path) -> None:
     """G99 G83 with Z (the bottom), R (top + CLEAR) and Q; the next hole X Y only; a hole
     with another top gives Z and R again; FACE is G82 with P, RETURN,0 is G98; G80."""
     lines = tape(plugins, tmp_path, CYCLES, "linuxcnc-mill")
-    assert lines[lines.index("N3 G00 X10. Y10. Z5.") + 1 :] == [
+    assert lines[lines.index("N3 G00 G43 X10. Y10. Z5. H1") + 1 :] == [
         "N4 G99",
         "N5 G83 X10. Y10. Z-12. F80. R2. Q4.",
         "N6 X30. Y10.",

@@ -15,6 +15,7 @@ from gecent.core.output.sinks import Sinks
 from gecent.core.plugins import PluginSet
 from gecent.core.run import Run
 from gecent.core.state import RunResult
+from gecent.core.toollist import tool_list
 
 
 def post(
@@ -41,6 +42,8 @@ def post(
         max_segments,
         fast,
     )
+    if machine.number_option(264) == 1:
+        run.state.header = tool_list(path, plugins, machine)
     for note in notes:
         run.warn(note)
     records = read_cl(path, plugins)

@@ -16,7 +16,7 @@ from gecent.core import tomldata
 from gecent.core.absent import ABSENT, ABSENT_SPELLINGS, Absent
 from pydantic import BaseModel, ConfigDict, Field, ValidationError
 
-OPTION_COUNT = 262  # the manual's 1-250 and gecent's 251-262 (docs/modern-controls.md)
+OPTION_COUNT = 264  # the manual's 1-250 and gecent's 251-264 (docs/modern-controls.md)
 MANUAL_OPTION_COUNT = 250
 TABLEG_SIZE = 130  # the manual's 1-120 and gecent's 121-130
 TABLEM_SIZE = 200

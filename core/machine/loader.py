@@ -33,6 +33,7 @@ from pydantic import ValidationError
 _UNION_TAGS = frozenset({"int", "str", "float"})
 _LETTERS = re.compile(r"^[A-Z]{0,2}$")
 MAX_HEADS = 3
+SECOND_G = 24  # REGSTR 24: a second G word, so it shares the G register's letter
 
 
 class MachineFileInvalid(InputError):
@@ -134,13 +135,13 @@ def _register_set(
                 f"register has format {raw[location]:g} but no letter (REGSTR is blank); "
                 "set a letter or set REGFOR to 0",
             )
-        elif letter in seen:
+        elif letter in seen and not (location == SECOND_G and seen[letter] == 2):
             problems.add(
                 f"{table_prefix}regstr",
                 location,
                 f"letter {letter} is already used by location {seen[letter]}",
             )
-        else:
+        elif letter not in seen:
             seen[letter] = location
     return RegisterSet(letters=tuple(letters), formats=tuple(formats), regfor=tuple(raw))
 

@@ -146,6 +146,7 @@ class FastLinear:
             and not state.numbering.unrepeated
             and state.pending.spindle is ABSENT
             and state.pending.m_code is ABSENT
+            and not state.tool.length_pending
             and (feed.programmed is not None or output.assumed_feed)
             and feed.ipm > 0
             and (not modern.frame or modern.started)

@@ -23,7 +23,14 @@ from gecent.core.motion.linear import TWO_AXIS
 from gecent.core.motion.rotary import UNITS_PER_DEGREE
 from gecent.core.output.block import Block, Code
 from gecent.core.output.marks import stand_in
-from gecent.core.output.modern import CL_PLANES, ModernControl, machine_planes
+from gecent.core.output.modern import (
+    CL_PLANES,
+    SECOND_G,
+    TOOL_LENGTH_ON,
+    TOOL_LENGTH_REGISTER,
+    ModernControl,
+    machine_planes,
+)
 from gecent.core.output.words import WordFormatter
 from gecent.core.state import SPINDLE_COMMAND, PostState
 
@@ -104,6 +111,8 @@ class OutputElement:
         self.separator = " " if machine.number_option(256) == 1 else ""
         end_code = machine.m_code(3)
         self.end_code: float | Absent = ABSENT if end_code is None else end_code
+        length_code = machine.g_code(TOOL_LENGTH_ON)
+        self.tool_length_code: float | Absent = ABSENT if length_code is None else length_code
 
     # -- OUTPUT (flow chart 8) ------------------------------------------------------------
 
@@ -128,6 +137,11 @@ class OutputElement:
         if block.code is Code.FROM and state.pending.m_code is not ABSENT:
             self.output(Block(Code.AUX_ONLY, block.record))  # "forced out" (001 L31370-31374)
         block.skipped = state.skipping
+        if state.tool.length_pending and block.code in MOVING_CODES:
+            # option 263 = 1: G43 H with the first move after a tool change
+            state.tool.length_pending = False
+            block.cells[SECOND_G] = self.tool_length_code
+            block.cells[TOOL_LENGTH_REGISTER] = float(state.tool.offset or 0)
         if block.code in MOTION_CODES:
             self._motion(block)
         elif block.code in POSITION_CODES:
@@ -354,6 +368,10 @@ class OutputElement:
         plane: int | None = 18  # TABLEG(18): XY
         if self.state.machine.number_option(252):
             plane = machine_planes(self.words.shuffle[:3])[0][0]
+        for comment in self.state.header:  # option 264: the tool list
+            text = Block(Code.INSERT, record, comment)
+            text.keep_blanks = True
+            self.emit(text)
         codes = modern.start_codes(plane)
         g = next((f for f in self.words.formatters if f.location == 2), None)
         if not codes or g is None:

@@ -26,6 +26,10 @@ INCH_UNITS, METRIC_UNITS = 121, 122
 PER_MINUTE, PER_REVOLUTION = 123, 124
 RETURN_INITIAL, RETURN_R_PLANE = 125, 126
 RAPID_TRAVERSE = 127
+TOOL_LENGTH_ON, TOOL_LENGTH_OFF, WORK_OFFSET = 128, 129, 130  # G43, G49, G54
+# REGSTR: H (tool length offset), D (cutter radius offset), a second G word (G43 with a move)
+TOOL_LENGTH_REGISTER, CUTTER_REGISTER, SECOND_G = 22, 23, 24
+MILL_OFFSETS, LATHE_OFFSETS = 1, 2  # option 263
 ABSOLUTE_INPUT, INCREMENTAL_INPUT = 96, 97
 CUTCOM_OFF, CYCLE_OFF = 40, 1
 PLANE_LOCATIONS = {(3, 4): 18, (5, 3): 19, (4, 5): 20}  # machine XY, ZX, YZ: TABLEG 18-20
@@ -90,7 +94,8 @@ class ModernControl:
         return self.absolute or self.direct_feed or self.frame
 
     def start_codes(self, plane_location: int | None) -> list[float]:
-        """The start block's modal G codes, those the machine has, in the usual order."""
+        """The start block's modal G codes, those the machine has, in the usual order: plane,
+        units, dimensions, feed mode, G40, G49, G80 and the work offset (G54)."""
         machine = self.machine
         dimension = machine.number_option(251)
         locations = [
@@ -103,7 +108,9 @@ class ModernControl:
             else None,
             PER_MINUTE if self.direct_feed else None,
             CUTCOM_OFF,
+            TOOL_LENGTH_OFF,
             CYCLE_OFF,
+            WORK_OFFSET,
         ]
         codes = [machine.g_code(location) for location in locations if location is not None]
         return [code for code in codes if code is not None]

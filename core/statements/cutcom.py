@@ -12,6 +12,7 @@ from typing import TYPE_CHECKING
 from gecent.core.cl.records import Statement
 from gecent.core.errors import Diagnostic, InputError
 from gecent.core.output.block import Block, Code
+from gecent.core.output.modern import CUTTER_REGISTER, MILL_OFFSETS
 
 if TYPE_CHECKING:
     from gecent.core.dispatch.context import Post
@@ -21,18 +22,44 @@ CUTCOM_CELLS = {"OFF": 40, "LEFT": 41, "RIGHT": 42, "PLUS": 46, "MINUS": 47}
 G_NOT_AVAILABLE = "REQUESTED PREPARATORY FUNCTION CODE IS NOT AVAILABLE ON THIS MACHINE"
 
 
+PLANES = ("XYPLAN", "YZPLAN", "ZXPLAN")  # APT IV's plane of the compensation
+
+
 def cutcom(run: Post, statement: Statement) -> None:
-    """CUTCOM/LEFT|RIGHT|OFF|PLUS|MINUS: TABLEG(40, 41, 42, 46, 47) in a G-only block; a
-    code the machine lacks is reported and nothing is output."""
+    """CUTCOM/LEFT|RIGHT|OFF|PLUS|MINUS[, XYPLAN|YZPLAN|ZXPLAN][, n]: TABLEG(40, 41, 42, 46,
+    47) in a G-only block; a code the machine lacks is reported and nothing is output. On
+    a modern mill (option 263 = 1) G41/G42 carry D: n, or the loaded tool's offset number;
+    the plane word is the plane the arcs already name (G17-G19) and changes nothing."""
     words = statement.words()
-    if len(statement.args) != 1 or len(words) != 1 or words[0] not in CUTCOM_CELLS:
-        raise InputError("CUTCOM expects one of LEFT, RIGHT, OFF, PLUS or MINUS", statement.where)
-    code = run.machine.g_code(CUTCOM_CELLS[words[0]])
+    numbers = statement.numbers()
+    side = [w for w in words if w in CUTCOM_CELLS]
+    planes = [w for w in words if w in PLANES]
+    if (
+        len(side) != 1
+        or len(planes) > 1
+        or len(side) + len(planes) != len(words)
+        or len(numbers) > 1
+        or (numbers and side[0] not in ("LEFT", "RIGHT"))
+    ):
+        raise InputError(
+            "CUTCOM expects LEFT or RIGHT [,XYPLAN|YZPLAN|ZXPLAN][,offset number], or OFF, "
+            f"PLUS or MINUS; found {', '.join(str(a) for a in statement.args) or 'nothing'}",
+            statement.where,
+        )
+    code = run.machine.g_code(CUTCOM_CELLS[side[0]])
     if code is None:
         run.warn(Diagnostic(G_NOT_AVAILABLE, statement.where))
         return
     block = Block(Code.G_ONLY, statement.number)
     block.cells[2] = code
+    if side[0] in ("LEFT", "RIGHT") and run.machine.number_option(263) == MILL_OFFSETS:
+        offset = numbers[0] if numbers else run.state.tool.offset
+        if offset is not None and run.machine.registers.formats[CUTTER_REGISTER] is not None:
+            if offset < 0 or offset != int(offset):
+                raise InputError(
+                    f"CUTCOM expects a whole offset number, found {offset:g}", statement.where
+                )
+            block.cells[CUTTER_REGISTER] = float(offset)
     run.output.output(block)
 
 

@@ -1,0 +1,116 @@
+"""The tool list of a program's header (gecent option 264, docs/modern-controls.md): one
+comment per tool the CL file loads, in the order first loaded, with the CUTTER diameter in
+force for it and the LENGTH LOADTL gives, in the machine's units.
+
+The list needs the whole file before the first block, so it is read in a pass of its own;
+for APT source text only the lines that can matter (LOADTL, TOOLNO, TURRET, CUTTER, UNITS)
+are parsed, so the pass costs a fraction of the post.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Iterator
+from dataclasses import dataclass
+
+from gecent.core.cl.apt_source import AptSourceReader
+from gecent.core.cl.records import Arelem, Record, Statement, Word
+from gecent.core.cl.stream import read_cl
+from gecent.core.errors import InputError
+from gecent.core.machine.definition import MachineDefinition
+from gecent.core.plugins import PluginSet
+from gecent.core.units import UnitScale
+
+LOADS = ("LOADTL", "TOOLNO", "TURRET")
+WANTED = (*LOADS, "CUTTER", "UNITS")
+CUTTER = 6  # ARELEM subtype of CUTTER (001 L3544-3615)
+
+
+@dataclass
+class ListedTool:
+    number: int
+    diameter: float | None = None
+    length: float | None = None
+
+    def comment(self, unit: str) -> str:
+        parts = [f"T{self.number}"]
+        if self.diameter is not None:
+            parts.append(f"DIAMETER {self.diameter:.4g} {unit}")
+        if self.length is not None:
+            parts.append(f"LENGTH {self.length:.4g} {unit}")
+        return "(" + ", ".join(parts) + ")"
+
+
+def tool_list(path: str, plugins: PluginSet, machine: MachineDefinition) -> list[str]:
+    """The header comments for the tools the CL file at ``path`` loads."""
+    unit = "MM" if machine.number_option(138) == 1 else "IN"
+    return [tool.comment(unit) for tool in listed_tools(_records(path, plugins), machine)]
+
+
+def listed_tools(records: Iterable[Record], machine: MachineDefinition) -> list[ListedTool]:
+    units = UnitScale(machine)
+    tools: dict[int, ListedTool] = {}
+    cutter: float | None = None
+    current: ListedTool | None = None
+    described = False  # a CUTTER has followed the current tool's LOADTL
+    for record in records:
+        if isinstance(record, Statement) and record.major == "UNITS":
+            units.set_units(record)
+        elif isinstance(record, Arelem) and record.subtype == CUTTER and record.values:
+            cutter = units.length(record.values[0])
+            if current is not None and not described:
+                # the first CUTTER after a LOADTL is that tool's (CAM systems write it
+                # after the load; APT before it, which the load then takes)
+                current.diameter = cutter
+                described = True
+        elif isinstance(record, Statement) and record.major in LOADS:
+            numbers = [a for a in record.args if not isinstance(a, Word)]
+            if not numbers:
+                continue  # the post reports a LOADTL without a tool
+            number = int(numbers[0])
+            current = tools.get(number)
+            described = current is not None
+            if current is None:
+                current = tools[number] = ListedTool(number, cutter)
+            length = _after(record, "LENGTH")
+            if length is not None:
+                current.length = units.length(length)
+    return list(tools.values())
+
+
+def _after(statement: Statement, name: str) -> float | None:
+    args = statement.args
+    for index, arg in enumerate(args[:-1]):
+        following = args[index + 1]
+        if isinstance(arg, Word) and arg.name == name and not isinstance(following, Word):
+            return float(following)
+    return None
+
+
+def _wanted(line: str) -> bool:
+    """A whole one-line statement beginning with one of the words (a continued statement
+    is left to the post, which reads it whole)."""
+    text = line.strip()
+    if not text or text[0] not in "LTCUltcu" or (text.endswith("$") and not text.endswith("$$")):
+        return False
+    return text.upper().startswith(WANTED)
+
+
+def _records(path: str, plugins: PluginSet) -> Iterator[Record]:
+    """The records that can matter: for APT source only the lines that begin with one of
+    the words, parsed by the APT source reader; a binary file whole."""
+    try:
+        with open(path, "rb") as handle:
+            head = handle.read(4096)
+    except OSError:
+        return iter(())  # the post itself reports the file
+    if b"\0" in head:
+        return read_cl(path, plugins)
+    try:
+        with open(path, encoding="utf-8", errors="replace", newline="") as handle:
+            lines = [line for line in handle if _wanted(line)]
+    except OSError:
+        return iter(())
+    try:
+        return iter(list(AptSourceReader(path).read_lines(lines)))
+    except InputError:
+        return iter(())  # a malformed statement: the post finds it with its line
