@@ -1,10 +1,11 @@
 """The tool list of a program's header (gecent option 264, docs/modern-controls.md): one
-comment per tool the CL file loads, in the order first loaded, with the CUTTER diameter in
-force for it and the LENGTH LOADTL gives, in the machine's units.
+comment per tool the CL file loads, in the order first loaded, with its CUTTER diameter (one
+given after the load and before the tool moves, else the one in force at the load) and the
+LENGTH LOADTL gives, in the machine's units.
 
 The list needs the whole file before the first block, so it is read in a pass of its own;
 for APT source text only the lines that can matter (LOADTL, TOOLNO, TURRET, CUTTER, UNITS)
-are parsed, so the pass costs a fraction of the post.
+are parsed, and a run of moves stands as one, so the pass costs a fraction of the post.
 """
 
 from __future__ import annotations
@@ -13,7 +14,7 @@ from collections.abc import Iterable, Iterator
 from dataclasses import dataclass
 
 from gecent.core.cl.apt_source import AptSourceReader
-from gecent.core.cl.records import Arelem, Record, Statement, Word
+from gecent.core.cl.records import Arelem, Motion, Record, Statement, Word
 from gecent.core.cl.stream import read_cl
 from gecent.core.errors import InputError
 from gecent.core.machine.definition import MachineDefinition
@@ -21,6 +22,8 @@ from gecent.core.plugins import PluginSet
 from gecent.core.units import UnitScale
 
 LOADS = ("LOADTL", "TOOLNO", "TURRET")
+_MOVES = ("GOTO", "FROM", "GODL")
+_MOVED = "GOTO/0,0,0\n"
 WANTED = (*LOADS, "CUTTER", "UNITS")
 CUTTER = 6  # ARELEM subtype of CUTTER (001 L3544-3615)
 
@@ -53,13 +56,15 @@ def listed_tools(records: Iterable[Record], machine: MachineDefinition) -> list[
     current: ListedTool | None = None
     described = False  # a CUTTER has followed the current tool's LOADTL
     for record in records:
-        if isinstance(record, Statement) and record.major == "UNITS":
+        if isinstance(record, Motion):
+            described = True  # the tool has cut: a later CUTTER is for the next tool
+        elif isinstance(record, Statement) and record.major == "UNITS":
             units.set_units(record)
         elif isinstance(record, Arelem) and record.subtype == CUTTER and record.values:
             cutter = units.length(record.values[0])
             if current is not None and not described:
-                # the first CUTTER after a LOADTL is that tool's (CAM systems write it
-                # after the load; APT before it, which the load then takes)
+                # a CUTTER after a LOADTL and before any move is that tool's (CAM systems
+                # write it after the load; APT before it, which the load then takes)
                 current.diameter = cutter
                 described = True
         elif isinstance(record, Statement) and record.major in LOADS:
@@ -107,7 +112,12 @@ def _records(path: str, plugins: PluginSet) -> Iterator[Record]:
         return read_cl(path, plugins)
     try:
         with open(path, encoding="utf-8", errors="replace", newline="") as handle:
-            lines = [line for line in handle if _wanted(line)]
+            lines: list[str] = []
+            for line in handle:
+                if _wanted(line):
+                    lines.append(line)
+                elif line.lstrip()[:4].upper() in _MOVES and (not lines or lines[-1] != _MOVED):
+                    lines.append(_MOVED)  # one stand-in for a run of moves
     except OSError:
         return iter(())
     try:

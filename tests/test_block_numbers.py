@@ -20,7 +20,14 @@ CL_FILES = sorted(
     for path in CORPUS.glob("*/*")
     if path.suffix in (".apt", ".cl3", ".1", ".8")
 )
-PACKS = ["linuxcnc-mill", "linuxcnc-mill-inch", "fanuc-mill", "fanuc-lathe"]
+PACKS = [
+    "linuxcnc-mill",
+    "linuxcnc-mill-inch",
+    "fanuc-mill",
+    "fanuc-lathe",
+    "haas-mill",
+    "sinumerik-840d-iso",
+]
 
 
 def post(source: Path, tape: Path, machine: str | None = None) -> tuple[int, str]:

@@ -75,7 +75,9 @@ def test_parse_canon_reads_moves_in_their_plane() -> None:
 
 @needs_rs274
 @needs_corpus
-@pytest.mark.parametrize("machine", ["linuxcnc-mill", "fanuc-mill"])
+@pytest.mark.parametrize(
+    "machine", ["linuxcnc-mill", "fanuc-mill", "haas-mill", "sinumerik-840d-iso"]
+)
 @pytest.mark.parametrize("name", CL_FILES)
 def test_corpus_verifies(plugins: PluginSet, tmp_path: Path, name: str, machine: str) -> None:
     source = CORPUS / name

@@ -106,6 +106,9 @@ def verify(
     reading = interpret(tape_path, diameter=machine.number_option(260) == 1)
     unit = "in" if reading.units == "INCHES" else "mm"
     tolerance = tolerance_mm / 25.4 if unit == "in" else tolerance_mm
+    # no tape is closer to the CL than half its step: a finer tolerance is raised to that
+    # (0.0001 in, the inch pack's step, is 0.00254 mm)
+    tolerance = max(tolerance, machine.number_option(14) * (0.5 + 1e-9))
     with open(tape_path, encoding="ascii", errors="replace") as tape:
         lines = tape.read().splitlines()
     if reading.error is not None:
