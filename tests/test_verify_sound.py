@@ -5,6 +5,7 @@ with motion the post does not follow (NURBS) fails."""
 from __future__ import annotations
 
 import shutil
+from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
 import pytest
@@ -95,3 +96,32 @@ def test_a_file_whose_nurbs_were_skipped_fails_verify(tmp_path: Path) -> None:
     assert result.exit_code == 1, result.output
     assert "FAILED: the CL file moves the tool by NURBS at" in result.output
     assert "nurbs.apt:8" in result.output and "(and 5 more such records)" in result.output
+
+
+@needs_rs274
+def test_verifications_at_once_do_not_disturb_each_other(
+    plugins: PluginSet, tmp_path: Path
+) -> None:
+    """rs274 maps $HOME/.tool.mmap: each run gets a HOME of its own, so runs in parallel
+    (a batch) do not crash each other, and a running LinuxCNC's tool table is left alone."""
+    source = tmp_path / "tools.apt"
+    source.write_text(tools_program(range(1, 12)))
+    tape = tmp_path / "tools.ngc"
+    result = CliRunner().invoke(
+        main, ["post", str(source), "--machine", "linuxcnc-mill", "-o", str(tape)]
+    )
+    assert result.exit_code == 0, result.output
+    home_table = Path.home() / ".tool.mmap"
+    before = home_table.stat().st_mtime_ns if home_table.exists() else None
+    with ThreadPoolExecutor(8) as pool:
+        runs = list(
+            pool.map(
+                lambda _: verify(str(tape), str(source), plugins, "linuxcnc-mill", 0.001),
+                range(16),
+            )
+        )
+    assert all(run.passed for run in runs), "\n".join(
+        next(r for r in runs if not r.passed).report()
+    )
+    after = home_table.stat().st_mtime_ns if home_table.exists() else None
+    assert after == before

@@ -10,6 +10,7 @@ which the copy starts with.
 
 from __future__ import annotations
 
+import os
 import re
 import shutil
 import subprocess
@@ -133,6 +134,9 @@ def interpret(tape_path: str, *, diameter: bool = False, timeout: float = 600.0)
             timeout=timeout,
             check=False,
             stdin=subprocess.DEVNULL,
+            # rs274 maps (and truncates) $HOME/.tool.mmap: two at once crash each other
+            # (SIGBUS), and a running LinuxCNC's tool table would be lost
+            env={**os.environ, "HOME": folder},
         )
     reading = parse_canon(done.stdout + done.stderr, done.returncode)
     reading.tools = tools
