@@ -457,6 +457,7 @@ class Run:
             if self.cycle_first_z is None:
                 self.cycle_first_z = at[2]
             if self.control_cycles is not None:
+                self.circle.select_plane(0, record.number)  # the control drills along Z
                 feed = self.state.feed
                 feed.rapid_requested = False  # the control positions at rapid itself
                 if feed.rapid_mode:

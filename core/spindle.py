@@ -351,6 +351,7 @@ class SpindleElement:
         if not was_on or reversed_ or (cells is not _M_CELL and range_changed):
             self._store(cells[direction], where)
         spindle.speed, spindle.direction, spindle.on = speed, direction, True
+        spindle.restart = None  # (a tool change's stop: this SPINDL starts it)
         if selection is not None:
             spindle.speed, spindle.range = selection.speed, selection.range
             self.state.pending.spindle = selection.command
@@ -379,6 +380,7 @@ class SpindleElement:
         machine = self.state.machine
         spindle = self.state.spindle
         spindle.on = False
+        spindle.restart = None
         spindle.range_code = None
         if machine.number_option(129) == 0:
             spindle.range = 1

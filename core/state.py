@@ -83,6 +83,9 @@ class Spindle:
     on: bool = False
     range: int = 1
     range_code: float | None = None  # the last range (or mode) M code output
+    # a modern control's tool change stopped the turning spindle: (S command, M code) to
+    # start it again with the first move, unless a SPINDL comes first
+    restart: tuple[float, float] | None = None
 
 
 @dataclass(slots=True)

@@ -40,7 +40,7 @@ from gecent.core.output.modern import (
     TOOL_LENGTH_ON,
     TOOL_LENGTH_REGISTER,
 )
-from gecent.core.state import T_CODE, PostState
+from gecent.core.state import SPINDLE_COMMAND, SPINDLE_M, T_CODE, PostState
 
 TOOL_CHANGE, TURRET_INDEX, FRONT_TURRET, REAR_TURRET = 7, 8, 29, 30
 TURN_CLW, TURN_CCLW = 83, 84
@@ -95,6 +95,7 @@ class ToolElement:
             t_code = tool
         self._load(statement, tool, t_code, words, index_cell=None)
         machine = self.state.machine
+        self._spindle_stopped()
         self.state.tool.offset = number
         self.state.tool.length_pending = (
             offsets == MILL_OFFSETS
@@ -209,6 +210,17 @@ class ToolElement:
             block.record = statement.number
             block.cells[13] = t_code
             self.output.output(block)
+
+    def _spindle_stopped(self) -> None:
+        """A modern control's tool change (M06) stops the spindle (Fanuc, Haas, LinuxCNC):
+        a turning spindle is started again, at its speed and in its sense, with the first
+        move after the change unless a SPINDL restarts it first."""
+        spindle = self.state.spindle
+        conditions = self.state.conditions.values
+        command, m_code = conditions.get(SPINDLE_COMMAND), conditions.get(SPINDLE_M)
+        if spindle.on and command is not None and m_code is not None:
+            spindle.restart = (command, m_code)
+        spindle.on = False
 
     def _shorter_way(self, station: int) -> int | None:
         """MINMOV: with option 88 = -N (N stations, turned by M codes) the shorter way from

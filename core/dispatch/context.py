@@ -13,6 +13,7 @@ from gecent.core.errors import Diagnostic
 from gecent.core.feed.positioning import FeedType
 from gecent.core.feed.rapid import RapidTraverse
 from gecent.core.machine.definition import MachineDefinition
+from gecent.core.motion.circle import CircularMotion
 from gecent.core.motion.control_cycles import ControlCycles
 from gecent.core.motion.cycles import Cycle
 from gecent.core.motion.rotary import RotaryElement
@@ -48,6 +49,9 @@ class Post(Protocol):
 
     @property
     def tool(self) -> ToolElement: ...
+
+    @property
+    def circle(self) -> CircularMotion: ...
 
     @property
     def rotary(self) -> RotaryElement: ...

@@ -268,14 +268,20 @@ class CircularMotion:
         position.previous[:] = position.present
 
     def _plane_block(self, record: Motion) -> None:
-        if self.plane == self.last_plane or not (self.three_axes or self.centre_words):
+        self.select_plane(self.plane, record.number)
+
+    def select_plane(self, plane: int, record: int) -> None:
+        """The plane code (G17/G18/G19) when the control is in another plane: before an
+        arc, and before what works in a plane too (a control's canned cycle drills along
+        the plane's normal; cutter compensation offsets in it)."""
+        if plane == self.last_plane or not (self.three_axes or self.centre_words):
             return
-        self.last_plane = self.plane
-        location = self.machine_plane[self.plane]
+        self.last_plane = plane
+        location = self.machine_plane[plane]
         g = ABSENT if location is None else self.machine.tableg[location]
         if g is ABSENT:
             return
-        block = Block(Code.G_ONLY, record.number)
+        block = Block(Code.G_ONLY, record)
         block.cells[2] = float(g)
         self.emit(block)
 

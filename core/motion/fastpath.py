@@ -147,6 +147,7 @@ class FastLinear:
             and state.pending.spindle is ABSENT
             and state.pending.m_code is ABSENT
             and not state.tool.length_pending
+            and state.spindle.restart is None
             and (feed.programmed is not None or output.assumed_feed)
             and feed.ipm > 0
             and (not modern.frame or modern.started)

@@ -137,6 +137,14 @@ class OutputElement:
         if block.code is Code.FROM and state.pending.m_code is not ABSENT:
             self.output(Block(Code.AUX_ONLY, block.record))  # "forced out" (001 L31370-31374)
         block.skipped = state.skipping
+        restart = state.spindle.restart
+        if restart is not None and block.code in MOVING_CODES:
+            # the spindle the tool change stopped turns again before the tool moves
+            state.spindle.restart = None
+            state.spindle.on = True
+            if state.pending.spindle is ABSENT:
+                state.pending.spindle = restart[0]
+            self.store_m(restart[1])
         if state.tool.length_pending and block.code in MOVING_CODES:
             # option 263 = 1: G43 H with the first move after a tool change
             state.tool.length_pending = False

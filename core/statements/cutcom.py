@@ -29,7 +29,7 @@ def cutcom(run: Post, statement: Statement) -> None:
     """CUTCOM/LEFT|RIGHT|OFF|PLUS|MINUS[, XYPLAN|YZPLAN|ZXPLAN][, n]: TABLEG(40, 41, 42, 46,
     47) in a G-only block; a code the machine lacks is reported and nothing is output. On
     a modern mill (option 263 = 1) G41/G42 carry D: n, or the loaded tool's offset number;
-    the plane word is the plane the arcs already name (G17-G19) and changes nothing."""
+    the control is put in the plane word's plane (XY without one) first, as for an arc."""
     words = statement.words()
     numbers = statement.numbers()
     side = [w for w in words if w in CUTCOM_CELLS]
@@ -50,6 +50,10 @@ def cutcom(run: Post, statement: Statement) -> None:
     if code is None:
         run.warn(Diagnostic(G_NOT_AVAILABLE, statement.where))
         return
+    if side[0] in ("LEFT", "RIGHT") and run.machine.number_option(9) == 1:
+        # compensation works in a plane: the control is put in it first (XY unless named)
+        plane = {"XYPLAN": 0, "ZXPLAN": 1, "YZPLAN": 2}[planes[0] if planes else "XYPLAN"]
+        run.circle.select_plane(plane, statement.number)
     block = Block(Code.G_ONLY, statement.number)
     block.cells[2] = code
     if side[0] in ("LEFT", "RIGHT") and run.machine.number_option(263) == MILL_OFFSETS:
