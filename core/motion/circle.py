@@ -350,14 +350,13 @@ class CircularMotion:
             code, arc.record.number, tuple(departures), tuple(position.present[:3]), step
         )
         centre = self._grid_centre(arc.radius / step, u, v)
-        if self.centre_words == CentreWords.RADIUS and sweep < tau:
-            # R: from the centre on the grid, never under half the chord (the control
-            # finds no centre then); negative beyond a half circle (Fanuc, LinuxCNC)
-            start = (position.previous[u], position.previous[v])
-            radius = hypot(start[0] - centre[0], start[1] - centre[1]) * step
-            chord = hypot(departures[u], departures[v]) * step
-            radius = max(radius, chord / 2)
-            block.cells[16] = -radius if sweep > pi else radius
+        radius_word = (
+            self._radius_word(centre, sweep, arc.clockwise, u, v)
+            if self.centre_words == CentreWords.RADIUS and sweep < tau
+            else None
+        )
+        if radius_word is not None:
+            block.cells[16] = radius_word
         else:
             for axis, value in zip((u, v), centre, strict=True):
                 relative = self.centre_words in (CentreWords.SIGNED, CentreWords.RADIUS)
@@ -368,6 +367,37 @@ class CircularMotion:
         self.emit(block)
         position.previous_part[:] = position.present_part
         position.previous[:] = position.present
+
+    def _radius_word(
+        self, centre: tuple[int, int], sweep: float, clockwise: bool, u: int, v: int
+    ) -> float | None:
+        """R (option 252 = 3): the radius from the grid centre, negative beyond a half
+        circle (Fanuc, LinuxCNC), as the R register rounds it; None when the centre the
+        control works out from that R and the end points lies more than a step from the
+        grid centre (near a half circle, or a short arc of a large radius: R cannot say
+        where the centre is), and I, J, K are given instead."""
+        position = self.state.position
+        step = self.step
+        start = (position.previous[u], position.previous[v])
+        end = (position.present[u], position.present[v])
+        fmt = self.machine.registers.formats[16]
+        decimals = fmt.right if fmt is not None else 4
+        radius = round(hypot(start[0] - centre[0], start[1] - centre[1]) * step, decimals)
+        chord = (end[0] - start[0], end[1] - start[1])
+        half = hypot(*chord) / 2 * step
+        if radius < half or half == 0:
+            return None
+        rise = (radius * radius - half * half) ** 0.5 / step
+        normal = (-chord[1] / (2 * half / step), chord[0] / (2 * half / step))
+        # the centre lies left of the chord for a counterclockwise arc up to a half circle
+        side = (1 if not clockwise else -1) * (1 if sweep <= pi else -1)
+        implied = (
+            (start[0] + end[0]) / 2 + side * rise * normal[0],
+            (start[1] + end[1]) / 2 + side * rise * normal[1],
+        )
+        if hypot(implied[0] - centre[0], implied[1] - centre[1]) > 1.0:
+            return None
+        return -radius if sweep > pi else radius
 
     def _grid_centre(self, radius: float, u: int, v: int) -> tuple[int, int]:
         """The centre on the step grid for a whole arc between rounded end points: of the

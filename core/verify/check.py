@@ -12,7 +12,7 @@ from gecent.core.machine.selection import apply_machin_options, first_machin, re
 from gecent.core.plugins import PluginSet
 from gecent.core.verify.clpath import cl_path
 from gecent.core.verify.compare import AXIS_NAMES, Comparison, compare
-from gecent.core.verify.rs274 import Interpretation, interpret
+from gecent.core.verify.rs274 import Interpretation, interpret, offset_words
 
 DEFAULT_TOLERANCE_MM = 0.001
 
@@ -26,13 +26,21 @@ class Verification:
     unit: str
     tape_lines: list[str]
     unfollowed: list[Statement] = field(default_factory=list)  # CL motion nobody follows
+    problem: str | None = None  # the tape cannot be compared at all (its units)
 
     @property
     def passed(self) -> bool:
-        return self.comparison is not None and self.comparison.passed and not self.unfollowed
+        return (
+            self.problem is None
+            and self.comparison is not None
+            and self.comparison.passed
+            and not self.unfollowed
+        )
 
     def report(self) -> list[str]:
         unit = self.unit
+        if self.problem is not None:
+            return [f"verify: FAILED: {self.problem}"]
         if self.comparison is None:
             line = self.interpretation.error_line
             text = self._tape_text(line)
@@ -89,7 +97,7 @@ def cl_machine(
     statement's OPTAB changes and LINEAR/LINCIR, as the post chooses it."""
     request, _ = first_machin(read_cl(cl_file, plugins))
     machine = resolve_machine(plugins, machine_key, request)
-    if request is not None and machine_key is None and request.number is not None:
+    if request is not None:  # the post applies its OPTAB changes to the machine it runs on
         machine = apply_machin_options(machine, request)[0]
     return machine
 
@@ -116,5 +124,20 @@ def verify(
     fmt = machine.registers.formats[11]
     decimals = min(4, fmt.right) if fmt is not None else 4
     feed_tolerance = 0.5 * 10.0**-decimals + 1e-9
-    comparison = compare(path, reading.moves, tolerance, feed_tolerance)
+    machine_unit = "mm" if machine.number_option(138) == 1 else "in"
+    if unit != machine_unit:
+        problem = (
+            f"the tape is in {'inches (G20)' if unit == 'in' else 'millimetres (G21)'}, "
+            f"the machine and the CL path in {'millimetres' if machine_unit == 'mm' else 'inches'}"
+        )
+        return Verification(machine, reading, None, tolerance, unit, lines, [], problem)
+    step = machine.number_option(14)
+    comparison = compare(
+        path,
+        reading.moves,
+        tolerance,
+        feed_tolerance,
+        offset_words("\n".join(lines)),
+        tolerance + step,
+    )
     return Verification(machine, reading, comparison, tolerance, unit, lines, path.unfollowed)

@@ -14,7 +14,7 @@ so no doubling here.
 from __future__ import annotations
 
 from collections.abc import Iterable
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from math import hypot
 
 from gecent.core.cl.records import (
@@ -53,6 +53,7 @@ class ArcSpec:
     on_arc: tuple[Point, ...] = ()  # the record's other points, on the arc within ``slack``
     slack: float = 0.0  # INTOL/OUTTOL in force: how far APT lets those points stray
     chords: bool = False  # the machine posts it as straight moves ending on the arc
+    sag: float = 0.0  # how far such a chord may fall inside the arc (option 262, or a step)
 
 
 @dataclass(frozen=True, slots=True)
@@ -67,6 +68,21 @@ class Target:
     statement: str
     feed: tuple[float, bool] | None = None
     arc: ArcSpec | None = None
+    machine: MachineState | None = None  # what the CL has loaded and switched on
+
+
+@dataclass(frozen=True, slots=True)
+class MachineState:
+    """What the CL file has the machine do while it cuts toward a point; None: the CL has
+    not said. ``tool``: the T code its LOADTL makes; ``spindle``: +1 CLW, -1 CCLW, 0 OFF;
+    ``side``: CUTCOM "left", "right" or "" (off); ``h``, ``d``: a modern mill's offset
+    numbers (option 263 = 1)."""
+
+    tool: int | None = None
+    spindle: int | None = None
+    side: str | None = None
+    h: int | None = None
+    d: int | None = None
 
 
 @dataclass
@@ -100,8 +116,11 @@ class _Reader:
         self.cycle: Cycle | None = None
         self.cycle_first_z: float | None = None
         self.circles = machine.number_option(9) == 1
+        self.offsets = int(machine.number_option(263))
+        self.state = MachineState()
         # options 261/262: which arcs the post gives as straight moves along them
         self.chords = machine.number_option(262) > 0
+        self.chord_sag = machine.number_option(262) if self.chords else machine.number_option(14)
         self.helical = machine.number_option(253) == 1 and machine.number_option(261) == 1
         self.tolerances = [0.0, 0.0]  # INTOL, OUTTOL (CL units scaled to the machine's)
 
@@ -150,6 +169,22 @@ class _Reader:
         major = statement.major
         if major in UNFOLLOWED_MOTION:
             self.path.unfollowed.append(statement)
+        elif major in ("LOADTL", "TOOLNO", "TURRET"):
+            self._load(statement)
+        elif major == "SPINDL":
+            words = statement.words()
+            direction = 1 if "CLW" in words else -1 if "CCLW" in words else None
+            if "OFF" in words:
+                direction = 0
+            if direction is not None:
+                self.state = replace(self.state, spindle=direction)
+        elif major == "CUTCOM":
+            words = statement.words()
+            given = statement.numbers()
+            side = "left" if "LEFT" in words else "right" if "RIGHT" in words else ""
+            if "OFF" in words or side:
+                d = int(given[0]) if given and side else self.state.h if side else None
+                self.state = replace(self.state, side=side, d=d if self.offsets == 1 else None)
         elif major == "UNITS":
             self.units.set_units(statement)
         elif major == "RAPID":
@@ -170,6 +205,42 @@ class _Reader:
             self.cycle_first_z = None
             if parsed is not None and parsed.feed is not None:
                 self._program_feed(*parsed.feed)
+
+    def _load(self, statement: Statement) -> None:
+        """The T code and offset number a tool change makes (docs/modern-controls.md, option
+        263); None where this reading does not follow the machine's T layout."""
+        args = statement.args
+        plain: list[int] = []
+        valued: dict[str, int] = {}
+        index = 0
+        while index < len(args):
+            arg = args[index]
+            if isinstance(arg, Word):
+                if arg.name in ("OFSETL", "ADJUST", "LENGTH") and index + 1 < len(args):
+                    following = args[index + 1]
+                    if not isinstance(following, Word):
+                        valued[arg.name] = int(float(following))
+                    index += 1
+            else:
+                plain.append(int(arg))
+            index += 1
+        if not plain:
+            return
+        tool = plain[0]
+        offset = valued.get("ADJUST", valued.get("OFSETL", tool))
+        code: int | None
+        if statement.major == "TURRET":
+            station = plain[1] if len(plain) > 1 else tool
+            code = station * 100 + valued.get("OFSETL", tool) if self.offsets == 2 else None
+        elif self.offsets == 2:
+            code = tool if tool > 99 else tool * 100 + offset
+        elif self.offsets == 1 or "OFSETL" not in valued:
+            code = tool
+        else:
+            code = tool * 100 + valued["OFSETL"]
+        self.state = replace(
+            self.state, tool=code, h=offset if self.offsets == 1 else None, side=""
+        )
 
     def _program_feed(self, value: float, unit: Word | None) -> None:
         """A feed in machine units, per revolution as its unit word says, or without one in
@@ -205,7 +276,7 @@ class _Reader:
         name = record.subtype.name
         text = f"{name}/" + ",".join(f"{v:.4f}" for v in point)
         self.path.targets.append(
-            Target(self.machine_point(point), kind, record.where, text, self.feed, arc)
+            Target(self.machine_point(point), kind, record.where, text, self.feed, arc, self.state)
         )
         self.at = point
 
@@ -292,6 +363,7 @@ class _Reader:
             tuple(self.machine_point(p) for p in on_arc),
             max(self.tolerances),
             chords,
+            self.chord_sag,
         )
 
 

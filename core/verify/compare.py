@@ -12,7 +12,7 @@ from dataclasses import dataclass, field
 from math import hypot
 
 from gecent.core.verify.clpath import PLANE_AXES, ClPath, Point, Target, radius_of
-from gecent.core.verify.rs274 import TapeMove
+from gecent.core.verify.rs274 import OffsetWords, TapeMove
 
 AXIS_NAMES = "XYZ"
 
@@ -52,13 +52,24 @@ def _segment_distance(point: Point, start: Point, end: Point, axes: tuple[int, .
 
 
 class _Walk:
-    def __init__(self, path: ClPath, moves: list[TapeMove], tolerance: float, feed_tol: float):
+    def __init__(
+        self,
+        path: ClPath,
+        moves: list[TapeMove],
+        tolerance: float,
+        feed_tol: float,
+        offsets: list[OffsetWords],
+        arc_tolerance: float,
+    ):
         self.path = path
         self.moves = moves
         self.tolerance = tolerance
+        self.arc_tolerance = arc_tolerance  # centre and radius: the I/J/K words round too
         self.feed_tolerance = feed_tol
+        self.offsets = offsets
         self.axes = path.compared
         self.result = Comparison(len(path.targets), len(moves))
+        self.start: Point = (0.0, 0.0, 0.0)  # where the move being checked begins
 
     def close(self, a: Point, b: Point) -> bool:
         return all(abs(a[i] - b[i]) <= self.tolerance for i in self.axes)
@@ -81,6 +92,7 @@ class _Walk:
             while index < len(self.moves):
                 move = self.moves[index]
                 index += 1
+                self.start = at
                 problem = self.check(move, target, cl_at)
                 if problem is not None:
                     self.result.mismatch = Mismatch(target, move, problem)
@@ -104,7 +116,13 @@ class _Walk:
     def check(self, move: TapeMove, target: Target, cl_at: Point | None) -> str | None:
         kind = target.kind
         if kind == "rapid":
-            return None if move.kind == "rapid" else f"a {move.kind} move where the CL has RAPID"
+            if move.kind != "rapid":
+                return f"a {move.kind} move where the CL has RAPID"
+            return self.rapid_problem(move, target, cl_at)
+        if move.kind != "rapid":
+            problem = self.machine_problem(move, target)
+            if problem is not None:
+                return problem
         if kind in ("cycle-entry", "cycle"):
             if kind == "cycle" and cl_at is not None:
                 off = hypot(*(move.end[i] - cl_at[i] for i in self.axes if i != 2))
@@ -126,6 +144,49 @@ class _Walk:
                 return f"ends {off:.4f} off the CL segment"
         return None
 
+    def rapid_problem(self, move: TapeMove, target: Target, cl_at: Point | None) -> str | None:
+        """A rapid move stays within the box of the CL's two points (the control's own way
+        between them, never a dip below both or a detour beyond them)."""
+        if cl_at is None:
+            return None
+        for axis in self.axes:
+            low = min(cl_at[axis], target.point[axis]) - self.tolerance
+            high = max(cl_at[axis], target.point[axis]) + self.tolerance
+            if not low <= move.end[axis] <= high:
+                return (
+                    f"a rapid move to {AXIS_NAMES[axis]} {move.end[axis]:.4f}, outside the way "
+                    f"between the CL's points ({low + self.tolerance:.4f} to "
+                    f"{high - self.tolerance:.4f})"
+                )
+        return None
+
+    def machine_problem(self, move: TapeMove, target: Target) -> str | None:
+        """While the tool cuts: the tool the CL loaded, its spindle turning as SPINDL says,
+        cutter compensation on the CL's side, and a modern mill's H (with G43) and D."""
+        state = target.machine
+        if state is None:
+            return None
+        if state.spindle is not None and state.spindle != move.spindle:
+            if move.spindle == 0:
+                return "the spindle is stopped where the CL cuts"
+            if state.spindle == 0:
+                return "the spindle turns where the CL has it off"
+            return "the spindle turns the other way than the CL's SPINDL"
+        if state.tool is not None and state.tool != move.tool:
+            return f"tool T{move.tool} cuts where the CL has loaded T{state.tool}"
+        if state.side is not None and state.side != move.side:
+            where = move.side or "off"
+            return f"cutter compensation {where} where the CL has {state.side or 'it off'}"
+        words = self.offsets[move.line - 1] if 0 < move.line <= len(self.offsets) else None
+        if words is not None and state.h is not None:
+            if not words.length_on:
+                return "tool length compensation (G43) is off where the tool cuts"
+            if words.h != state.h:
+                return f"H{words.h} where the tool's offset number is {state.h}"
+        if words is not None and state.side and state.d is not None and words.d != state.d:
+            return f"D{words.d} where the CL's compensation is D{state.d}"
+        return None
+
     def feed_problem(self, move: TapeMove, target: Target) -> str | None:
         if target.feed is None:
             return None
@@ -145,23 +206,38 @@ class _Walk:
             if move.kind == "arc":
                 return "an arc where the machine posts straight moves along it"
             radius = radius_of(move.end, arc.centre, arc.plane)
-            if abs(radius - arc.radius) > self.tolerance:
+            if abs(radius - arc.radius) > self.arc_tolerance:
                 return f"a move along the arc ends {abs(radius - arc.radius):.4f} off it"
+            first, second = PLANE_AXES[arc.plane]
+            a = (self.start[first] - arc.centre[first], self.start[second] - arc.centre[second])
+            b = (move.end[first] - arc.centre[first], move.end[second] - arc.centre[second])
+            cross = a[0] * b[1] - a[1] * b[0]
+            if abs(cross) > self.tolerance * arc.radius and (cross > 0) != arc.counterclockwise:
+                return "a move along the arc goes back against the arc's sense"
+            half = hypot(b[0] - a[0], b[1] - a[1]) / 2
+            sag = arc.radius - max(0.0, arc.radius * arc.radius - half * half) ** 0.5
+            if half > arc.radius or sag > arc.sag + self.arc_tolerance:
+                return (
+                    f"a straight move along the arc falls {sag:.4f} inside it, more than "
+                    f"the machine's chord tolerance {arc.sag:g}"
+                )
             if self.close(move.end, target.point):
                 self.result.arcs += 1
             return None
         if move.kind != "arc" or move.centre is None:
             return "a straight move where the CL has an arc"
         self.result.arcs += 1
+        if abs(move.rotation) != 1:
+            return f"the arc turns {abs(move.rotation)} times (a P word): the CL's turns once"
         if move.plane != arc.plane:
             return f"an arc in the {move.plane} plane, the CL's is in {arc.plane}"
         first, second = PLANE_AXES[arc.plane]
         for axis in (first, second):
             off = abs(move.centre[axis] - arc.centre[axis])
-            if off > self.tolerance:
+            if off > self.arc_tolerance:
                 return f"arc centre {AXIS_NAMES[axis]} is {off:.4f} off the CL's"
         radius = radius_of(move.end, move.centre, arc.plane)
-        if abs(radius - arc.radius) > self.tolerance:
+        if abs(radius - arc.radius) > self.arc_tolerance:
             return f"arc radius {radius:.4f}, the CL's is {arc.radius:.4f}"
         if (move.rotation > 0) != arc.counterclockwise:
             sense = "counterclockwise" if arc.counterclockwise else "clockwise"
@@ -174,6 +250,14 @@ class _Walk:
 
 
 def compare(
-    path: ClPath, moves: list[TapeMove], tolerance: float, feed_tolerance: float
+    path: ClPath,
+    moves: list[TapeMove],
+    tolerance: float,
+    feed_tolerance: float,
+    offsets: list[OffsetWords] | None = None,
+    arc_tolerance: float | None = None,
 ) -> Comparison:
-    return _Walk(path, moves, tolerance, feed_tolerance).run()
+    """``offsets``: the tape's offset words per line; ``arc_tolerance``: for an arc's centre
+    and radius (the tolerance and a step: the centre words round as the end point does)."""
+    arc = tolerance if arc_tolerance is None else arc_tolerance
+    return _Walk(path, moves, tolerance, feed_tolerance, offsets or [], arc).run()

@@ -58,6 +58,11 @@ class TapeMove:
     plane: str = "XY"
     centre: Point | None = None
     rotation: int = 0
+    # the machine when the move runs: the tool selected (T), the spindle (+1 clockwise,
+    # -1 counterclockwise, 0 stopped), cutter compensation ("left", "right" or "")
+    tool: int = 0
+    spindle: int = 0
+    side: str = ""
 
 
 @dataclass
@@ -92,7 +97,44 @@ def numbered_copy(tape: str, *, diameter: bool) -> str:
     return "\n".join(lines) + "\n"
 
 
+SPINDLE_CALLS = {
+    "START_SPINDLE_CLOCKWISE": 1,
+    "START_SPINDLE_COUNTERCLOCKWISE": -1,
+    "STOP_SPINDLE_TURNING": 0,
+}
 _COMMENT = re.compile(r"\([^)]*\)|;.*$")
+_WORD = re.compile(r"([A-Z])\s*([-+]?[\d.]+)")
+
+
+@dataclass(frozen=True, slots=True)
+class OffsetWords:
+    """The offset words in force after a tape line (read from its text: rs274 reports
+    offsets by value, which the zero tool table makes 0): H and whether G43 is on, D."""
+
+    h: int | None = None
+    length_on: bool = False
+    d: int | None = None
+
+
+def offset_words(tape: str) -> list[OffsetWords]:
+    """Per tape line (index 0 = line 1), the offset words in force after it."""
+    state = OffsetWords()
+    found: list[OffsetWords] = []
+    for line in tape.splitlines():
+        words = _WORD.findall(_COMMENT.sub("", line).upper())
+        h, length_on, d = state.h, state.length_on, state.d
+        for letter, value in words:
+            if letter == "G" and value in ("43", "43.0"):
+                length_on = True
+            elif letter == "G" and value in ("49", "49.0"):
+                length_on = False
+            elif letter == "H":
+                h = int(float(value))
+            elif letter == "D":
+                d = int(float(value))
+        state = OffsetWords(h, length_on, d)
+        found.append(state)
+    return found
 _TOOL_WORDS = re.compile(r"(?<![A-Z])[TDH]\s*(\d+)", re.IGNORECASE)
 
 
@@ -151,6 +193,7 @@ def parse_canon(output: str, returncode: int = 0) -> Interpretation:
     """The moves of rs274's canonical output, with the feed and plane each runs under."""
     moves: list[TapeMove] = []
     feed, per_revolution, plane, units = 0.0, False, "XY", "MM"
+    tool, spindle, side = 0, 0, ""
     tail: list[str] = []
     for text in output.splitlines():
         match = _CANON.match(text)
@@ -163,7 +206,11 @@ def parse_canon(output: str, returncode: int = 0) -> Interpretation:
         if name in ("STRAIGHT_TRAVERSE", "STRAIGHT_FEED"):
             x, y, z = _numbers(args)[:3]
             kind = "rapid" if name == "STRAIGHT_TRAVERSE" else "feed"
-            moves.append(TapeMove(kind, (x, y, z), line, feed, per_revolution, plane))
+            moves.append(
+                TapeMove(
+                    kind, (x, y, z), line, feed, per_revolution, plane, None, 0, tool, spindle, side
+                )
+            )
         elif name == "ARC_FEED":
             values = _numbers(args)
             first, second, third = ARC_AXES[plane]
@@ -181,8 +228,17 @@ def parse_canon(output: str, returncode: int = 0) -> Interpretation:
                     plane,
                     (centre[0], centre[1], centre[2]),
                     int(values[4]),
+                    tool,
+                    spindle,
+                    side,
                 )
             )
+        elif name == "SELECT_TOOL":
+            tool = int(_numbers(args)[0])
+        elif name in SPINDLE_CALLS:
+            spindle = SPINDLE_CALLS[name]
+        elif name == "COMMENT" and "cutter radius compensation" in args:
+            side = "left" if "on left" in args else "right" if "on right" in args else ""
         elif name == "SET_FEED_RATE":
             feed = _numbers(args)[0]
         elif name == "SET_FEED_MODE":
