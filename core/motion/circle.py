@@ -320,7 +320,12 @@ class CircularMotion:
         if circular:
             c = self.centre_moved
             for axis in (u, v):
-                steps = to_steps(abs(c[axis] - position.previous[axis] * self.step), self.step)
+                if self.centre_words == CentreWords.ABSOLUTE:
+                    steps = to_steps(c[axis], self.step)
+                elif self.centre_words:  # signed from the block's start (R: I/J/K here)
+                    steps = to_steps(c[axis], self.step) - position.previous[axis]
+                else:  # the manual's unsigned offsets
+                    steps = to_steps(abs(c[axis] - position.previous[axis] * self.step), self.step)
                 block.cells[8 + axis] = steps * self.step
             block.radius = arc.radius
         self.emit(block)

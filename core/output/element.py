@@ -146,10 +146,14 @@ class OutputElement:
                 state.pending.spindle = restart[0]
             self.store_m(restart[1])
         if state.tool.length_pending and block.code in MOVING_CODES:
-            # option 263 = 1: G43 H with the first move after a tool change
+            # option 263 = 1: G43 H with the first move after a tool change, in a block of
+            # its own before an arc or a cycle (G43 goes with a straight move)
             state.tool.length_pending = False
-            block.cells[SECOND_G] = self.tool_length_code
-            block.cells[TOOL_LENGTH_REGISTER] = float(state.tool.offset or 0)
+            carrier = block if block.code is Code.LINEAR else Block(Code.G_ONLY, block.record)
+            carrier.cells[SECOND_G if carrier is block else 2] = self.tool_length_code
+            carrier.cells[TOOL_LENGTH_REGISTER] = float(state.tool.offset or 0)
+            if carrier is not block:
+                self._output(carrier)
         if block.code in MOTION_CODES:
             self._motion(block)
         elif block.code in POSITION_CODES:
@@ -385,6 +389,8 @@ class OutputElement:
         if not codes or g is None:
             return
         words = [g.letter + g.format(code).punched for code in codes]
+        if self.state.machine.number_option(252) == 2:
+            words.append("G90.1")  # arc centres absolute (LinuxCNC; option 252 = 2)
         block = Block(Code.INSERT, record, " ".join(words))
         block.keep_blanks = bool(self.separator)
         self.emit(block)

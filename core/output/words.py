@@ -175,6 +175,7 @@ class WordFormatter:
             if (
                 location in ZERO_RULE_CELLS
                 and not (absolute and (location <= 7 or (location == 16 and cycle)))
+                and not (self.absolute_centre and 8 <= location <= 10)  # a centre at 0
                 and text.punched.strip("+-0.") == ""
             ):
                 if self.zero_rule in (0, -2):  # delete value and address (standard)

@@ -166,12 +166,18 @@ class _Walk:
         state = target.machine
         if state is None:
             return None
+        # (inside a canned cycle the control reverses the spindle to tap out: its sense is
+        # the control's there)
+        in_cycle = target.kind == "cycle"
         if state.spindle is not None and state.spindle != move.spindle:
-            if move.spindle == 0:
+            if in_cycle and move.spindle != 0 and state.spindle != 0:
+                pass
+            elif move.spindle == 0:
                 return "the spindle is stopped where the CL cuts"
-            if state.spindle == 0:
+            elif state.spindle == 0:
                 return "the spindle turns where the CL has it off"
-            return "the spindle turns the other way than the CL's SPINDL"
+            else:
+                return "the spindle turns the other way than the CL's SPINDL"
         if state.tool is not None and state.tool != move.tool:
             return f"tool T{move.tool} cuts where the CL has loaded T{state.tool}"
         if state.side is not None and state.side != move.side:
