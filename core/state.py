@@ -140,6 +140,7 @@ class Modes:
     stopped: bool = False
     ended: bool = False
     origin: tuple[float, float, float] = (0.0, 0.0, 0.0)
+    compensation: str = ""  # CUTCOM in force: "LEFT", "RIGHT" (or PLUS, MINUS), "" off
 
 
 @dataclass(slots=True)

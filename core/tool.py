@@ -35,6 +35,7 @@ from gecent.core.errors import Diagnostic, InputError, NotYetSupported, SourcePo
 from gecent.core.output.block import Block, Code
 from gecent.core.output.element import OutputElement
 from gecent.core.output.modern import (
+    CUTCOM_OFF,
     LATHE_OFFSETS,
     MILL_OFFSETS,
     TOOL_LENGTH_ON,
@@ -78,6 +79,21 @@ class ToolElement:
             t_code = tool if offset is None else tool * 100 + offset
             self._load(statement, tool, t_code, words, index_cell=None)
             return
+        modes = self.state.modes
+        if modes.compensation:
+            # a control does not change tools under G41/G42: compensation ends first
+            self.warn(
+                Diagnostic(
+                    f"TOOL CHANGE WITH CUTCOM/{modes.compensation} ON: G40 FIRST",
+                    statement.where,
+                )
+            )
+            modes.compensation = ""
+            code = self.state.machine.g_code(CUTCOM_OFF)
+            if code is not None:
+                block = Block(Code.G_ONLY, statement.number)
+                block.cells[2] = code
+                self.output.output(block)
         adjust = _value_after(statement, "ADJUST")
         _value_after(statement, "LENGTH")  # checked; the control holds the tool's length
         number = adjust if adjust is not None else offset if offset is not None else tool

@@ -30,12 +30,13 @@ CUTTER = 6  # ARELEM subtype of CUTTER (001 L3544-3615)
 
 @dataclass
 class ListedTool:
-    number: int
+    number: int  # the T code the load makes (a lathe's station and offset, option 263 = 2)
     diameter: float | None = None
     length: float | None = None
+    digits: int = 0  # T's digits as the tape shows them (a lathe's four)
 
     def comment(self, unit: str) -> str:
-        parts = [f"T{self.number}"]
+        parts = [f"T{self.number:0{self.digits}d}"]
         if self.diameter is not None:
             parts.append(f"DIAMETER {self.diameter:.4g} {unit}")
         if self.length is not None:
@@ -51,6 +52,7 @@ def tool_list(path: str, plugins: PluginSet, machine: MachineDefinition) -> list
 
 def listed_tools(records: Iterable[Record], machine: MachineDefinition) -> list[ListedTool]:
     units = UnitScale(machine)
+    lathe = machine.number_option(263) == 2
     tools: dict[int, ListedTool] = {}
     cutter: float | None = None
     current: ListedTool | None = None
@@ -68,18 +70,43 @@ def listed_tools(records: Iterable[Record], machine: MachineDefinition) -> list[
                 current.diameter = cutter
                 described = True
         elif isinstance(record, Statement) and record.major in LOADS:
-            numbers = [a for a in record.args if not isinstance(a, Word)]
-            if not numbers:
+            number = _t_code(record, lathe)
+            if number is None:
                 continue  # the post reports a LOADTL without a tool
-            number = int(numbers[0])
             current = tools.get(number)
             described = current is not None
             if current is None:
-                current = tools[number] = ListedTool(number, cutter)
+                current = tools[number] = ListedTool(number, cutter, None, 4 if lathe else 0)
             length = _after(record, "LENGTH")
             if length is not None:
                 current.length = units.length(length)
     return list(tools.values())
+
+
+def _t_code(statement: Statement, lathe: bool) -> int | None:
+    """The tool a load names; on a lathe with station and offset in T (option 263 = 2) the
+    T code itself, as core/tool.py makes it (LOADTL/1 and LOADTL/101 are both T0101)."""
+    args = statement.args
+    plain: list[int] = []
+    index = 0
+    while index < len(args):
+        arg = args[index]
+        if isinstance(arg, Word):
+            index += 2 if arg.name in ("OFSETL", "ADJUST", "LENGTH") else 1
+            continue
+        plain.append(int(arg))
+        index += 1
+    if not plain:
+        return None
+    tool = plain[0]
+    if not lathe:
+        return tool
+    adjust, ofsetl = _after(statement, "ADJUST"), _after(statement, "OFSETL")
+    offset = int(adjust if adjust is not None else ofsetl if ofsetl is not None else tool)
+    if statement.major == "TURRET":
+        station = plain[1] if len(plain) > 1 else tool
+        return station * 100 + int(ofsetl if ofsetl is not None else tool)
+    return tool if tool > 99 else tool * 100 + offset
 
 
 def _after(statement: Statement, name: str) -> float | None:

@@ -146,7 +146,7 @@ def test_fanuc_lathe_example(plugins: PluginSet) -> None:
         "%",
         "O2000",
         "(SHAFT END OP10)",
-        "(T1)",
+        "(T0101)",
         "G18 G21 G90 G94 G40 G80 G54",
         "N1 T0101",  # station 1, offset 1 (option 263 = 2)
         "N2 S1200 M03",

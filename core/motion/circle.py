@@ -28,8 +28,9 @@ from math import acos, asin, atan2, ceil, cos, hypot, pi, sin, tau
 
 from gecent.core.absent import ABSENT
 from gecent.core.cl.records import Circle, Motion, MotionSubtype
-from gecent.core.errors import Diagnostic, FatalError, NotYetSupported
+from gecent.core.errors import Diagnostic, FatalError, InputError, NotYetSupported
 from gecent.core.machine.shuffle import cell_map
+from gecent.core.motion.guard import check_segments
 from gecent.core.motion.rounding import round_to_step, to_steps
 from gecent.core.output.block import Block, Code
 from gecent.core.output.modern import CL_PLANES, machine_planes
@@ -86,6 +87,7 @@ class CircularMotion:
         self.centre_moved: tuple[float, float, float] = (0.0, 0.0, 0.0)  # CIRDAT + TRANS
         self.exact_centre: tuple[float, float, float] = (0.0, 0.0, 0.0)  # the record's, unrounded
         self.axis_sense = 0.0  # the circle axis component along the plane normal
+        self.tilted = False  # the axis is along none of X, Y, Z
         self._reference = 0.0
         self.centre_words = int(machine.number_option(252))  # CentreWords
         self.whole = machine.number_option(253) == 1
@@ -111,6 +113,13 @@ class CircularMotion:
             self.centre = None
             return
         x, y, z, i, j, k = record.values[:6]
+        radius = record.values[6] if len(record.values) > 6 else None
+        if abs(i) <= self.epsilon and abs(j) <= self.epsilon and abs(k) <= self.epsilon:
+            raise InputError("CIRCLE has no axis: i, j and k are all 0", record.where)
+        if radius is not None and not radius > 0:
+            raise InputError(f"CIRCLE radius must be more than 0, found {radius:g}", record.where)
+        components = sum(abs(c) > self.epsilon for c in (i, j, k))
+        self.tilted = components > 1
         self.exact_centre = (x, y, z)
         self.centre = (
             round_to_step(x, self.step),
@@ -125,6 +134,8 @@ class CircularMotion:
         centre, self.centre = self.centre, None  # CIRFLG is spent by this motion either way
         if centre is None or record.subtype is not MotionSubtype.GOTO:
             return False
+        if self.tilted:
+            raise NotYetSupported("a circle about an axis along none of X, Y, Z", record.where)
         if self.state.feed.rapid_ipm:
             return False  # a rapid move is never an arc (decision, PROCQD reads FRAPID)
         if self.state.sfm.active:
@@ -161,6 +172,17 @@ class CircularMotion:
         if radius > self.depmax:
             return False
         last = points[-1]
+        if len(points) == 1 and self.whole:
+            # a CAM arc's end lies on the circle through its start: one off it is no arc
+            ending = hypot(
+                last[u] + (tx, ty, tz)[u] - moved[u], last[v] + (tx, ty, tz)[v] - moved[v]
+            )
+            if abs(ending - radius) > max(10 * self.step, 1e-4 * radius):
+                raise InputError(
+                    f"CIRCLE: the arc ends {abs(ending - radius):.4g} off its circle (radius "
+                    f"{radius:.4g} at its start, {ending:.4g} at its end)",
+                    record.where,
+                )
         self.centre_moved = moved
         self.arc = _Arc(
             record,
@@ -237,6 +259,7 @@ class CircularMotion:
         if radius > 0 and 2 * radius > self.depmax:  # a chord of 2r sin(a/2) within option 4
             widest = min(widest, 2 * asin(min(1.0, self.depmax / (2 * radius))))
         count = max(1, ceil(sweep / widest - 1e-9)) if radius > 0 else 1
+        check_segments(count, self.state.max_segments, arc.record.where, "arc as chords")
         c = self.centre_moved
         begin = atan2(first[1], first[0])
         turn = -sweep if arc.clockwise else sweep

@@ -122,7 +122,7 @@ class FastLinear:
     def ready(self, special: bool) -> bool:
         """Nothing special in force (``special``: the run has a circle or cycle going): no
         rapid (but the move after a one-shot rapid on a machine without gear shifts), thread,
-        SFM, stop or END awaiting its FROM, OPSKIP, SEQNO/OFF, pending S or M code,
+        SFM, stop or END awaiting its FROM, OPSKIP, pending S or M code,
         unfinished program start, feed mode to change or note to report, N without repeats;
         a feed given."""
         state = self.state
@@ -142,7 +142,6 @@ class FastLinear:
             and not modes.ended
             and not modes.stopped
             and not state.skipping
-            and not state.numbering.off
             and not state.numbering.unrepeated
             and state.pending.spindle is ABSENT
             and state.pending.m_code is ABSENT
@@ -184,6 +183,7 @@ class FastLinear:
         placed = modern.absolute
         modern_active = modern.active
         sequence_limit = self.sequence_limit
+        frame = modern.frame
         separator = self.separator
         suppress_g = words.suppress_g
         suppress_f = words.suppress_f
@@ -214,6 +214,9 @@ class FastLinear:
             points = record.points
             if len(points) != 1:
                 return False
+            series = numbering.series
+            if frame and series is not None and series[0] > sequence_limit and not numbering.off:
+                return False  # N beyond its digits: the general path stops numbering
             point = points[0]
             if len(point) != 3:
                 return False
@@ -298,8 +301,11 @@ class FastLinear:
             output.cut_minutes += cut_minutes
             pending.rpm = None
             number = record.number
+            numbered = not numbering.off
             series = numbering.series
-            if series is not None:  # SEQNO's series, or counting blocks (option 143 = 1)
+            if not numbered:
+                sequence = 0
+            elif series is not None:  # SEQNO's series, or counting blocks (option 143 = 1)
                 sequence, increment = series
                 numbering.series = (sequence + increment, increment)
             else:
@@ -347,6 +353,8 @@ class FastLinear:
                         punched_words.append(letter)
                         continue
                 elif location == 1:
+                    if not numbered:
+                        continue
                     if scale is not None:
                         printed, punched = text_of(sequence, False)
                     else:
@@ -377,7 +385,8 @@ class FastLinear:
                 return True
             block = Block(linear, number)
             cells = block.cells
-            cells[1] = float(sequence)
+            if numbered:
+                cells[1] = float(sequence)
             cells[2] = g_code
             if command is not None:
                 cells[11] = command

@@ -148,12 +148,12 @@ class OutputElement:
         if state.tool.length_pending and block.code in MOVING_CODES:
             # option 263 = 1: G43 H with the first move after a tool change, in a block of
             # its own before an arc or a cycle (G43 goes with a straight move)
-            state.tool.length_pending = False
-            carrier = block if block.code is Code.LINEAR else Block(Code.G_ONLY, block.record)
-            carrier.cells[SECOND_G if carrier is block else 2] = self.tool_length_code
-            carrier.cells[TOOL_LENGTH_REGISTER] = float(state.tool.offset or 0)
-            if carrier is not block:
-                self._output(carrier)
+            if block.code is Code.LINEAR:
+                state.tool.length_pending = False
+                block.cells[SECOND_G] = self.tool_length_code
+                block.cells[TOOL_LENGTH_REGISTER] = float(state.tool.offset or 0)
+            else:
+                self.tool_length_block(block.record)
         if block.code in MOTION_CODES:
             self._motion(block)
         elif block.code in POSITION_CODES:
@@ -192,6 +192,16 @@ class OutputElement:
         block.cells[1] = self._sequence_number(block)
         self._emit(block)
 
+    def tool_length_block(self, record: int | None) -> None:
+        """G43 H in a block of its own (option 263 = 1), when the tool's first move cannot
+        carry it (an arc, a cycle) or cutter compensation comes before that move."""
+        state = self.state
+        state.tool.length_pending = False
+        block = Block(Code.G_ONLY, record)
+        block.cells[2] = self.tool_length_code
+        block.cells[TOOL_LENGTH_REGISTER] = float(state.tool.offset or 0)
+        self._output(block)
+
     def _sequence_number(self, block: Block) -> float | Absent:
         """N: the CL record number (option 143 = 0), or the SEQNO series, or none after
         SEQNO/OFF; negative under OPSKIP; above SEQLIM, N modulus SEQLIM (001 L9117-9126,
@@ -206,6 +216,18 @@ class OutputElement:
         else:
             sequence = block.record if block.record is not None else state.sequence
         if sequence > self.sequence_limit:
+            if self.modern.frame and numbering.series is not None:
+                # a program for a modern control never repeats an N: past the register's
+                # digits its blocks go on without one
+                numbering.off = True
+                self.diagnostics.append(
+                    Diagnostic(
+                        f"BLOCK NUMBERS PASS N{self.sequence_limit}: THE REST OF THE PROGRAM "
+                        "HAS NO N WORDS",
+                        None,
+                    )
+                )
+                return ABSENT
             sequence %= self.sequence_limit
         if numbering.unrepeated and block.punched:
             if sequence == numbering.last:

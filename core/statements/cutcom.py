@@ -50,6 +50,22 @@ def cutcom(run: Post, statement: Statement) -> None:
     if code is None:
         run.warn(Diagnostic(G_NOT_AVAILABLE, statement.where))
         return
+    modes = run.state.modes
+    modern = run.machine.number_option(263) == MILL_OFFSETS
+    if modern and side[0] in ("LEFT", "RIGHT"):
+        if modes.compensation and modes.compensation != side[0]:
+            # a control changes sides through G40 (LinuxCNC refuses G42 under G41)
+            run.warn(
+                Diagnostic(
+                    f"CUTCOM/{side[0]} WHILE {modes.compensation} IS ON: G40 FIRST", statement.where
+                )
+            )
+            compensation_off(run, statement.number)
+        tool = run.state.tool
+        if tool.length_pending:
+            # the tool length goes on before compensation (no G43 under G41/G42)
+            run.output.tool_length_block(statement.number)
+    modes.compensation = "" if side[0] == "OFF" else side[0]
     if side[0] in ("LEFT", "RIGHT") and run.machine.number_option(9) == 1:
         # compensation works in a plane: the control is put in it first (XY unless named)
         plane = {"XYPLAN": 0, "ZXPLAN": 1, "YZPLAN": 2}[planes[0] if planes else "XYPLAN"]
@@ -68,3 +84,14 @@ def cutcom(run: Post, statement: Statement) -> None:
 
 
 HANDLERS = {"CUTCOM": cutcom}
+
+
+def compensation_off(run: Post, record: int) -> None:
+    """G40 in a block of its own (TABLEG 40)."""
+    code = run.machine.g_code(CUTCOM_CELLS["OFF"])
+    run.state.modes.compensation = ""
+    if code is None:
+        return
+    block = Block(Code.G_ONLY, record)
+    block.cells[2] = code
+    run.output.output(block)

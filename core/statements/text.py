@@ -46,15 +46,15 @@ _BRACKETS = str.maketrans("()", "[]")
 
 
 def carried(text: str, punchable: frozenset[str] | None) -> tuple[str, list[str]]:
-    """A comment's text as the tape can carry it: printable ASCII (a tab is a blank, an
-    accented letter its base letter), and with a punch only the punch code's characters
+    """A comment's text as the tape can carry it: printable ASCII (a tab and a % are blanks,
+    an accented letter its base letter), and with a punch only the punch code's characters
     (a lower-case letter in upper case, anything else a blank). Also what was replaced (a
     letter put in upper case is not counted)."""
     kept: list[str] = []
     replaced: list[str] = []
     for character in text:
         new = character
-        if character == "\t":
+        if character == "\t" or character == "%":  # % ends a program on the tape
             new = " "
         elif not " " <= character <= "~":
             base = unicodedata.normalize("NFKD", character).encode("ascii", "ignore").decode()
