@@ -54,6 +54,7 @@ class ArcSpec:
     slack: float = 0.0  # INTOL/OUTTOL in force: how far APT lets those points stray
     chords: bool = False  # the machine posts it as straight moves ending on the arc
     sag: float = 0.0  # how far such a chord may fall inside the arc (option 262, or a step)
+    full: bool = False  # it ends where it began: a whole circle (the post's rule)
 
 
 @dataclass(frozen=True, slots=True)
@@ -323,6 +324,9 @@ class _Reader:
         helix = len(points) == 1 and abs(start[normal] - end[normal]) > epsilon
         chords = self.chords or (helix and not self.helical)
         spec = self._arc_spec(centre, radius, u, v, ccw, points[:-1], chords)
+        if spec is not None:  # within 0.01 step of its start: a full circle (core/motion/circle.py)
+            closed = hypot(end[u] - start[u], end[v] - start[v])
+            spec = replace(spec, full=closed <= 0.01 * self.machine.number_option(14))
         kind = self._kind()
         if spec is None:  # the plane is not one the machine has: the post goes linear
             for point in points:

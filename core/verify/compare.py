@@ -84,7 +84,8 @@ class _Walk:
         cl_at: Point | None = None
         index = 0
         for target in self.path.targets:
-            if target.arc is None and self.close(at, target.point):
+            if (target.arc is None or not target.arc.full) and self.close(at, target.point):
+                # (an arc whose end rounds onto its start is no move: the post gives none)
                 self.note(at, target.point)
                 cl_at = target.point
                 continue
@@ -92,6 +93,8 @@ class _Walk:
             while index < len(self.moves):
                 move = self.moves[index]
                 index += 1
+                if move.kind != "arc" and move.end == at:
+                    continue  # no move (a canned cycle's rapid to the level it is at)
                 self.start = at
                 problem = self.check(move, target, cl_at)
                 if problem is not None:

@@ -135,6 +135,8 @@ def offset_words(tape: str) -> list[OffsetWords]:
         state = OffsetWords(h, length_on, d)
         found.append(state)
     return found
+
+
 _TOOL_WORDS = re.compile(r"(?<![A-Z])[TDH]\s*(\d+)", re.IGNORECASE)
 
 
