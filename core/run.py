@@ -249,6 +249,11 @@ class Run:
                 error.where = self._record.where
             self._stopped_by(error)
             raise
+        except (InputError, NotYetSupported) as error:
+            if error.where is None and self._record is not None:
+                error.where = self._record.where  # every message names the file and line
+            self.sinks.close(Ending(False))
+            raise
         except BaseException:
             self.sinks.close(Ending(False))
             raise

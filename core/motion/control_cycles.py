@@ -67,6 +67,11 @@ class ControlCycles:
         first_z: float,
     ) -> None:
         """One hole: the cycle block; the tool ends at (x, y, the return level)."""
+        if cycle.kind == "TAP" and self.state.spindle.direction < 0:
+            # G84 taps right-handed (M03): a left-hand tap is G74, which no TABLEG names yet
+            raise NotYetSupported(
+                "CYCLE/TAP with the spindle CCLW (a left-hand tap, G74) by the control's cycle"
+            )
         position = self.state.position
         tx, ty, tz = position.translation
         x, y, top = hole[0] + tx, hole[1] + ty, hole[2] + tz
@@ -96,10 +101,10 @@ class ControlCycles:
             block.cells[5], block.cells[R_REGISTER] = words
             if cycle.kind == "DEEP" and cycle.step:
                 block.cells[PECK_REGISTER] = cycle.step
-            dwell = cycle.dwell if cycle.kind == "FACE" or cycle.dwell else 0.0
-            if dwell:
+            if cycle.kind == "FACE" or cycle.dwell:
+                # FACE is G82, which takes its P even when 0 (LinuxCNC refuses G82 without)
                 register = int(machine.number_option(57))
-                block.cells[register] = dwell / (machine.number_option(56) or 1.0)
+                block.cells[register] = (cycle.dwell or 0.0) / (machine.number_option(56) or 1.0)
         self.words = words
         block.feed_length = 2 * (plane - bottom)  # down and (at most) back at feed
         block.dwell_minutes = cycle.dwell / 60.0 if cycle.dwell else 0.0
