@@ -10,6 +10,7 @@ from __future__ import annotations
 from decimal import ROUND_HALF_UP, Decimal
 
 ROUND_UP_FROM = 0.5001  # printed "0.50010" (L4000) and "0.5001" (L5505): 0.4999 step rounds up
+ROUND_UP_NUMERATOR, ROUND_UP_DENOMINATOR = 5001, 10000  # the same, for exact arithmetic
 
 
 def to_steps(value: float, step: float) -> int:

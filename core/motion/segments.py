@@ -11,7 +11,7 @@ from __future__ import annotations
 
 from collections.abc import Iterator, Sequence
 
-from gecent.core.motion.rounding import ROUND_UP_FROM
+from gecent.core.motion.rounding import ROUND_UP_DENOMINATOR, ROUND_UP_NUMERATOR
 
 
 def segment_count(departures: Sequence[int], limits: Sequence[int]) -> int:
@@ -30,19 +30,20 @@ def segments(departures: Sequence[int], count: int) -> Iterator[tuple[int, ...]]
     """The per-segment departures, in steps, of a move split into ``count`` segments.
 
     For each axis: the exact point advances by departure / count; each output is that exact
-    point minus the actual point so far, rounded to a whole step (001 L4514-4559)."""
-    share = [d / count for d in departures]
-    exact = [0.0] * len(departures)
+    point minus the actual point so far, rounded to a whole step (001 L4514-4559). The exact
+    point after k segments is the fraction departure * k / count, kept in whole numbers: a
+    float sum of the shares drifts on a long move until a segment no longer fits option 4."""
     actual = [0] * len(departures)
-    for index in range(count):
+    up_num, up_den = ROUND_UP_NUMERATOR, ROUND_UP_DENOMINATOR
+    for index in range(1, count + 1):
         out = []
-        for axis, size in enumerate(share):
-            if index == count - 1:
-                step = departures[axis] - actual[axis]  # exact: the end point is whole steps
+        for axis, departure in enumerate(departures):
+            if index == count:
+                step = departure - actual[axis]  # exact: the end point is whole steps
             else:
-                exact[axis] += size
-                rest = exact[axis] - actual[axis]
-                magnitude = int(abs(rest) + ROUND_UP_FROM)
+                # rest = departure * index / count - actual, as numerator / count
+                rest = departure * index - actual[axis] * count
+                magnitude = (abs(rest) * up_den + up_num * count) // (up_den * count)
                 step = -magnitude if rest < 0 else magnitude
             actual[axis] += step
             out.append(step)
