@@ -26,6 +26,8 @@ from importlib import resources
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, ClassVar, Protocol, runtime_checkable
 
+from gecent.core.errors import InputError, SourcePosition
+
 if TYPE_CHECKING:
     from gecent.core.cl.records import Record
     from gecent.core.machine.definition import MachineDefinition
@@ -109,7 +111,16 @@ class MachinePack:
     @classmethod
     def from_path(cls, path: str | Path) -> MachinePack:
         path = Path(path)
-        return cls.from_text(path.read_text(encoding="utf-8"), str(path))
+        raw = path.read_bytes()
+        try:
+            text = raw.decode("utf-8")
+        except UnicodeDecodeError as exc:
+            line = raw.count(b"\n", 0, exc.start) + 1
+            raise InputError(
+                f"a machine file is UTF-8 text; byte {exc.start} (line {line}) is not",
+                SourcePosition(str(path), line),
+            ) from None
+        return cls.from_text(text, str(path))
 
     @cached_property
     def definition(self) -> MachineDefinition:

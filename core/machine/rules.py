@@ -8,6 +8,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Iterator
 from itertools import pairwise
+from math import isfinite
 
 from gecent.core.absent import ABSENT
 from gecent.core.machine.catalogue import STORE_SIZE
@@ -63,8 +64,15 @@ def _option_values(machine: MachineDefinition) -> Iterator[Problem]:
             yield "optab", number, f"{what} must be a whole number {low}..{high}; found {value!r}"
     if not machine.feed_table and _whole(machine.options[174]) and int(_number(machine, 174)) % 2:
         yield "optab", 174, "FRTAB size must be even (a minimum and a maximum per range)"
+    for number, value in enumerate(machine.options):
+        if isinstance(value, float) and not isfinite(value):
+            yield "optab", number, f"must be a finite number; found {value!r}"
     if _number(machine, 14) <= 0:
         yield "optab", 14, "step size must be greater than 0"
+    if _number(machine, 4) <= 0:
+        yield "optab", 4, "the largest departure must be greater than 0 (segments divide by it)"
+    if _number(machine, 45) == 0:
+        yield "optab", 45, "the largest rapid command must not be 0 (negative: no rapid F)"
     if _number(machine, 5) < 0:
         yield "optab", 5, "equality tolerance must not be negative"
     axes = machine.options[22]
@@ -117,6 +125,12 @@ def _spindle_table(machine: MachineDefinition) -> Iterator[Problem]:
                 )
             if any(s < 0 for s in speeds):
                 yield "spindle_table", "speeds", f"range {range_number} has a negative speed"
+            if not all(isfinite(s) for s in speeds):
+                yield (
+                    "spindle_table",
+                    "speeds",
+                    f"range {range_number} has a speed that is not a finite number",
+                )
     if spindle_type == 7 and _number(machine, 133) != 1:
         yield "optab", 133, "spindle type 7 computes S in the machine's MACFUN: set option 133 = 1"
 
