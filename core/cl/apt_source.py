@@ -16,6 +16,7 @@ The reader is a generator: memory does not grow with the file.
 
 from __future__ import annotations
 
+import codecs
 import re
 from collections.abc import Iterable, Iterator
 
@@ -277,15 +278,30 @@ class AptSourceReader:
         return Statement(file, line, number, major, self._vocabulary.major_code(major), tuple(args))
 
 
+def text_encoding(path: str) -> str:
+    """UTF-8 (with or without a byte-order mark) when the whole file decodes so, else
+    Latin-1, which every byte does: CAM systems write both (German PPRINT umlauts)."""
+    decoder = codecs.getincrementaldecoder("utf-8")()
+    with open(path, "rb") as handle:
+        first = handle.read(1 << 16)
+        bom = first.startswith(codecs.BOM_UTF8)
+        chunk = first
+        try:
+            while chunk:
+                decoder.decode(chunk)
+                chunk = handle.read(1 << 20)
+            decoder.decode(b"", final=True)
+        except UnicodeDecodeError:
+            return "latin-1"
+    return "utf-8-sig" if bom else "utf-8"
+
+
 def read_apt_source(path: str) -> Iterator[Record]:
     """Stream the records of an APT source CL file."""
     reader = AptSourceReader(path)
     try:
-        with open(path, encoding="utf-8", errors="strict", newline="") as handle:
+        encoding = text_encoding(path)
+        with open(path, encoding=encoding, errors="strict", newline="") as handle:
             yield from reader.read_lines(handle)
-    except UnicodeDecodeError as exc:
-        raise InputError(
-            f"not a text CL file (byte {exc.start}: {exc.reason})", SourcePosition(path)
-        ) from None
     except OSError as exc:
         raise InputError(f"cannot read CL file: {exc.strerror}", SourcePosition(path)) from None

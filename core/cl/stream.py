@@ -22,14 +22,16 @@ def choose_reader(path: str, plugins: PluginSet) -> ClReader:
         raise InputError(f"cannot read CL file: {exc.strerror}", SourcePosition(path)) from None
     if not head:
         raise InputError(
-            "empty CL file: expected CL records ending with FINI", SourcePosition(path)
+            "empty CL file: expected CL records ending with FINI", SourcePosition(path, 1)
         )
     readers: list[ClReader] = [info.obj for info in plugins.family("readers").values()]
     for reader in readers:
         if reader.sniff(head):
             return reader
     names = ", ".join(r.name for r in readers) or "none installed"
-    raise InputError(f"no CL reader recognises this file (readers: {names})", SourcePosition(path))
+    raise InputError(
+        f"no CL reader recognises this file (readers: {names})", SourcePosition(path, 1)
+    )
 
 
 def read_cl(path: str, plugins: PluginSet, layout: Layout | None = None) -> Iterator[Record]:

@@ -15,13 +15,13 @@ class AptSourceCl:
     description = "APT source CL text (GOTO / x, y, z ... FINI), e.g. Creo, CATIA, NX, Mastercam"
 
     def sniff(self, head: bytes) -> bool:
+        """Text: no NUL byte, and control characters (other than tab, line and page ends)
+        rare; UTF-8 or Latin-1 alike (a stray control character is then an error naming
+        its line and column, not an unknown format)."""
         if b"\x00" in head:
             return False
-        try:
-            head.decode("utf-8")
-        except UnicodeDecodeError as exc:  # a cut in the middle of a character is still text
-            return exc.start >= len(head) - 3
-        return True
+        controls = sum(1 for byte in head if byte < 32 and byte not in (9, 10, 12, 13))
+        return controls <= max(1, len(head) // 100)
 
     def read(self, path: str) -> Iterator[Record]:
         return read_apt_source(path)
