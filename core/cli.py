@@ -27,6 +27,7 @@ from gecent.core.errors import (
     Diagnostic,
     GecentError,
     InputError,
+    InternalError,
     SourcePosition,
 )
 from gecent.core.families import FAMILIES, MachinePack
@@ -51,6 +52,8 @@ def _reporting_errors(function: F) -> F:
         try:
             return function(*args, **kwargs)
         except GecentError as exc:
+            if isinstance(exc, InternalError) and os.environ.get("GECENT_DEBUG"):
+                raise
             click.echo(str(exc), err=True)
             sys.exit(exc.exit_status)
         except click.exceptions.Exit:

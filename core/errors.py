@@ -99,6 +99,25 @@ class GecentError(Exception):
     partial: object | None = None
 
 
+class InternalError(GecentError):
+    """A bug in gecent met while posting: exit 70, naming the record being posted, never
+    mistaken for bad input. The original exception is its cause (GECENT_DEBUG=1 shows it)."""
+
+    exit_status = EXIT_INTERNAL
+
+    def __init__(self, error: BaseException, where: SourcePosition | None) -> None:
+        super().__init__(f"{type(error).__name__}: {error}")
+        self.error = error
+        self.where = where
+
+    def __str__(self) -> str:
+        prefix = f"{self.where}: " if self.where is not None else ""
+        return (
+            f"{prefix}gecent: internal error: {self.args[0]} (a bug in gecent, not in the "
+            "input: please report it with the input; GECENT_DEBUG=1 shows the traceback)"
+        )
+
+
 class InputError(GecentError):
     """Malformed input: the message names the file, position and what was expected."""
 

@@ -29,6 +29,7 @@ from gecent.core.errors import (
     FatalError,
     GecentError,
     InputError,
+    InternalError,
     NotYetSupported,
     RunStopped,
     SourcePosition,
@@ -254,6 +255,13 @@ class Run:
                 error.where = self._record.where  # every message names the file and line
             self.sinks.close(Ending(False))
             raise
+        except GecentError:
+            self.sinks.close(Ending(False))
+            raise
+        except Exception as error:  # a bug: reported as one, with the record being posted
+            self.sinks.close(Ending(False))
+            where = self._record.where if self._record is not None else None
+            raise InternalError(error, where) from error
         except BaseException:
             self.sinks.close(Ending(False))
             raise

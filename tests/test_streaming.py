@@ -262,12 +262,13 @@ def test_a_json_reader_that_goes_away_ends_the_json_not_the_post(tmp_path: Path)
 
 
 def test_a_value_no_register_can_hold_stops_the_run_naming_it(tmp_path: Path) -> None:
-    """DELAY/1e308 is finite, but its dwell word overflows every format: the manual's
-    register overflow, with file and line, the listing kept with its dump, no tape."""
+    """DELAY/1e9 is a number a statement can carry, but its dwell word overflows the
+    format: the manual's register overflow, with file and line, the listing kept with its
+    dump, no tape. (DELAY/1e308 is bad input: no time is that long.)"""
     source = tmp_path / "d.apt"
-    source.write_text("MACHIN/GECENT,23\nFROM/0,0,0\nDELAY/1e308\nFINI\n")
+    source.write_text("MACHIN/GECENT,23\nFROM/0,0,0\nDELAY/1e9\nFINI\n")
     code, _, err = run(
         "post", str(source), "-o", str(tmp_path / "d.tape"), "--listing", str(tmp_path / "d.lis")
     )
-    assert code == 1 and f"{source}:3 (record 3): error: X1e+307 does not fit" in err
+    assert code == 1 and f"{source}:3 (record 3): error: X1e+08 does not fit" in err
     assert names(tmp_path) == ["d.apt", "d.lis"]

@@ -34,19 +34,38 @@ def check_segments(count: int, bound: int, where: SourcePosition | None, what: s
         )
 
 
+# no length, feed, speed, time or count a CL statement gives means anything beyond this
+# (10**12 mm is a million kilometres); past it the arithmetic of the post overflows
+LARGEST_NUMBER = 1e12
+
+
 def check_finite(values: tuple[float, ...], where: SourcePosition | None, what: str) -> None:
     for value in values:
         if not isfinite(value):
             raise InputError(f"{what} has a value that is not a finite number ({value})", where)
 
 
+def check_size(values: tuple[float, ...], where: SourcePosition | None, what: str) -> None:
+    for value in values:
+        if abs(value) > LARGEST_NUMBER:
+            raise InputError(
+                f"{what} has a value no length, feed, speed or count can have ({value:g}; "
+                f"at most {LARGEST_NUMBER:g})",
+                where,
+            )
+
+
 def check_numbers(record: Record) -> None:
-    """Every number a statement, CIRCLE or ARELEM record carries is finite."""
+    """Every number a statement, CIRCLE or ARELEM record carries is finite and at most
+    LARGEST_NUMBER in size."""
     if isinstance(record, Statement):
         numbers = tuple(a for a in record.args if isinstance(a, float))
         check_finite(numbers, record.where, record.major)
+        check_size(numbers, record.where, record.major)
     elif isinstance(record, Circle | Arelem):
-        check_finite(record.values, record.where, type(record).__name__.upper())
+        kind = type(record).__name__.upper()
+        check_finite(record.values, record.where, kind)
+        check_size(record.values, record.where, kind)
 
 
 class CoordinateGuard:
