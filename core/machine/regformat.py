@@ -7,6 +7,7 @@ punched; 0 means the machine has no such register.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from math import isfinite
 
 
 @dataclass(frozen=True, slots=True)
@@ -36,6 +37,9 @@ class RegisterFormat:
         return f"{'-' if self.signed else ''}{self.left}.{self.right}"
 
 
+MAX_REGFOR = 99
+
+
 def decode_regfor(value: float) -> RegisterFormat | None:
     """Decode a REGFOR value; ``None`` for 0 (no register).
 
@@ -44,7 +48,10 @@ def decode_regfor(value: float) -> RegisterFormat | None:
     if value == 0:
         return None
     magnitude = abs(value)
-    if magnitude != int(magnitude):
+    if not isfinite(magnitude) or magnitude != int(magnitude):
         raise ValueError(f"{value!r} is not ±(10·L + R) with whole digit counts")
+    if magnitude > MAX_REGFOR:
+        # L and R are digit counts of a tape word: no control reads 10 digits on a side
+        raise ValueError(f"{value!r} asks for more than 9 digits on a side (at most ±{MAX_REGFOR})")
     left, right = divmod(int(magnitude), 10)
     return RegisterFormat(signed=value < 0, left=left, right=right)
