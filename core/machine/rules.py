@@ -100,6 +100,14 @@ def _spindle_table(machine: MachineDefinition) -> Iterator[Problem]:
                 f"SRTAB({empty[0]}) is empty",
             )
         return
+    if count >= len(machine.store):
+        yield (
+            "spindle_table",
+            "speeds",
+            f"option 7 x option 8 = {count} speeds, more than the store holds "
+            f"({len(machine.store) - 1})",
+        )
+        return
     missing = [i for i in range(1, count + 1) if machine.store[i] is ABSENT]
     if missing:
         yield (

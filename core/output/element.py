@@ -477,8 +477,7 @@ class OutputElement:
                 raise InputError(
                     f"a feed move before any FEDRAT, and option 23 = {assumed:g} assumes no "
                     "feedrate (processing stops)",
-                    SourcePosition("", None, None, self.state.sequence),
-                )
+                )  # (the run names the record being posted)
             self.assumed_feed = True
             self.diagnostics.append(Diagnostic("OPTION FEEDRATE ASSUMED."))
             feed.ipm = assumed

@@ -19,7 +19,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import IO, Protocol
 
-from gecent.core.errors import GecentError, NotYetSupported
+from gecent.core.errors import GecentError, NotYetSupported, SourcePosition
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.output.block import Block
 from gecent.core.output.files import AtomicFile
@@ -249,9 +249,14 @@ def output_sinks(
     if listing is not None:
         layout = int(machine.number_option(164))
         printout = plugins.get("printouts", layout)
+        where = SourcePosition(machine.origin)  # what the machine asks for: its file
         if printout is None:
-            raise NotYetSupported(f"printout GEOUT{layout} (option 164 = {layout})")
-        writer = printout.listing(machine, lambda: sinks.partno)
+            raise NotYetSupported(f"printout GEOUT{layout} (option 164 = {layout})", where)
+        try:
+            writer = printout.listing(machine, lambda: sinks.partno)
+        except NotYetSupported as exc:
+            exc.where = exc.where or where
+            raise
     puncher = (
         Puncher(
             punch_to[0],
