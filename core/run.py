@@ -41,7 +41,12 @@ from gecent.core.motion.circle import CircularMotion
 from gecent.core.motion.control_cycles import ControlCycles
 from gecent.core.motion.cycles import Cycle, cycle_legs
 from gecent.core.motion.fastpath import FastLinear
-from gecent.core.motion.guard import DEFAULT_MAX_SEGMENTS, CoordinateGuard, check_numbers
+from gecent.core.motion.guard import (
+    DEFAULT_MAX_SEGMENTS,
+    CoordinateGuard,
+    check_numbers,
+    check_segments,
+)
 from gecent.core.motion.linear import LinearMotion, godlta_delta, path_length
 from gecent.core.motion.positioning import PositioningMotion
 from gecent.core.motion.rotary import RotaryElement
@@ -49,7 +54,7 @@ from gecent.core.motion.thread import ThreadElement
 from gecent.core.output.block import Block, Code
 from gecent.core.output.element import OutputElement
 from gecent.core.output.format import FormatOverflow
-from gecent.core.output.modern import modern_output
+from gecent.core.output.modern import modern_output, program_end, program_start
 from gecent.core.output.sinks import CollectSink, Ending, Sinks
 from gecent.core.plugins import PluginSet, get_plugins, macfun_handler
 from gecent.core.reinstate import restat
@@ -275,26 +280,9 @@ class Run:
         error.partial = self.result
         self.sinks.close(Ending(False, dump=self.result.dump))
 
-    def _open_program(self) -> None:
-        """Option 258: % opens the program, then the option-259 program number."""
-        machine = self.machine
-        if machine.number_option(258) != 1:
-            return
-        # a program for a modern control numbers its blocks as after SEQNO/ON (option 143;
-        # docs/decisions.md): by the record number, counting, or without repeats
-        self.state.numbering.switch_on(machine.number_option(143))
-        self.text_block(Block(Code.INSERT, None, "%"))
-        number = int(machine.number_option(259))
-        if number > 0:
-            self.text_block(Block(Code.INSERT, None, f"O{number:04d}"))
-
-    def _close_program(self, record: Fini) -> None:
-        self.output.finish_program(record.number)
-        if self.machine.number_option(258) == 1:
-            self.text_block(Block(Code.INSERT, record.number, "%"))
-
     def _process(self, records: Iterator[Record]) -> RunResult:
-        self._open_program()
+        for text in program_start(self.machine, self.state.numbering):
+            self.text_block(Block(Code.INSERT, None, text))
         fast: FastLinear | None = None
         result = self.result
         state = self.state
@@ -376,7 +364,9 @@ class Run:
         elif isinstance(record, Circle):
             self.circle.surface(record)  # ignored on a linear-only control (option 9 = 0)
         elif isinstance(record, Fini):
-            self._close_program(record)
+            self.output.finish_program(record.number)
+            for text in program_end(self.machine):
+                self.text_block(Block(Code.INSERT, record.number, text))
             self.text_block(Block(Code.FINI, record.number))
             self.finished = True
         elif isinstance(record, Comment | PartText | Surface | Other):
@@ -477,6 +467,9 @@ class Run:
                     self.rapid.leave()
                 self.control_cycles.hole(self.cycle, record.number, hole, self.cycle_first_z)
                 continue
+            if self.cycle.kind == "DEEP" and self.cycle.step:
+                pecks = int(min(abs(self.cycle.depth / self.cycle.step), 1e18))
+                check_segments(pecks, self.state.max_segments, record.where, "deep-hole cycle")
             for leg in cycle_legs(self.cycle, at, hole, self.cycle_first_z):
                 if leg.dwell:
                     block = self.output.dwell(leg.dwell)

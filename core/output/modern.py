@@ -19,6 +19,7 @@ from collections.abc import Sequence
 from gecent.core.absent import ABSENT
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.output.block import Block
+from gecent.core.state import Numbering
 
 ABSOLUTE, INCREMENTAL_CODED = 1.0, 2.0
 # TABLEG locations (gecent's 121-127 and the manual's) used by modern controls
@@ -140,6 +141,21 @@ class ModernControl:
     def forget(self) -> None:
         """After a tool change the next move states every axis."""
         self.at = None
+
+
+def program_start(machine: MachineDefinition, numbering: Numbering) -> list[str]:
+    """Option 258: % opens the program, then the option-259 program number; the program
+    numbers its blocks as after SEQNO/ON (option 143; docs/decisions.md)."""
+    if machine.number_option(258) != 1:
+        return []
+    numbering.switch_on(machine.number_option(143))
+    number = int(machine.number_option(259))
+    return ["%", f"O{number:04d}"] if number > 0 else ["%"]
+
+
+def program_end(machine: MachineDefinition) -> list[str]:
+    """Option 258: % after the end code."""
+    return ["%"] if machine.number_option(258) == 1 else []
 
 
 def modern_output(machine: MachineDefinition) -> bool:
