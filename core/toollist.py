@@ -12,6 +12,7 @@ from __future__ import annotations
 
 from collections.abc import Iterable, Iterator
 from dataclasses import dataclass
+from math import isfinite
 
 from gecent.core.cl.apt_source import AptSourceReader
 from gecent.core.cl.records import Arelem, Motion, Record, Statement, Word
@@ -94,6 +95,8 @@ def _t_code(statement: Statement, lathe: bool) -> int | None:
         if isinstance(arg, Word):
             index += 2 if arg.name in ("OFSETL", "ADJUST", "LENGTH") else 1
             continue
+        if not isfinite(arg) or abs(arg) > 1e12:
+            return None  # the post reports the number at its line
         plain.append(int(arg))
         index += 1
     if not plain:
@@ -102,6 +105,9 @@ def _t_code(statement: Statement, lathe: bool) -> int | None:
     if not lathe:
         return tool
     adjust, ofsetl = _after(statement, "ADJUST"), _after(statement, "OFSETL")
+    for value in (adjust, ofsetl):
+        if value is not None and (not isfinite(value) or abs(value) > 1e12):
+            return None
     offset = int(adjust if adjust is not None else ofsetl if ofsetl is not None else tool)
     if statement.major == "TURRET":
         station = plain[1] if len(plain) > 1 else tool

@@ -39,12 +39,14 @@ _CHOICES: dict[int, tuple[set[float], str]] = {
 
 
 def _whole(value: float | str) -> bool:
-    return isinstance(value, float) and value == int(value)
+    return isinstance(value, float) and isfinite(value) and value == int(value)
 
 
 def _number(machine: MachineDefinition, number: int) -> float:
+    """The option's number (0 for text, and for a value that is not finite, which its own
+    rule reports, so that the other rules can still be checked)."""
     value = machine.options[number]
-    return value if isinstance(value, float) else 0.0
+    return value if isinstance(value, float) and isfinite(value) else 0.0
 
 
 def _option_values(machine: MachineDefinition) -> Iterator[Problem]:
