@@ -11,6 +11,7 @@ import tomllib
 from collections.abc import Iterable, Mapping
 from functools import cache
 from importlib import resources
+from math import isfinite
 from pathlib import Path
 
 from gecent.core import tomldata
@@ -169,6 +170,8 @@ def _options(
             problems.add("optab", key, f"option {number} ({spec.alias}) must be a number, not text")
         elif spec.kind == "text" and not isinstance(value, str):
             problems.add("optab", key, f"option {number} ({spec.alias}) holds text (a tape code)")
+        elif not isinstance(value, str) and not isfinite(float(value)):
+            problems.add("optab", key, f"option {number} must be a finite number; found {value!r}")
         else:
             values[number] = float(value) if not isinstance(value, str) else value
     return tuple(values)
@@ -316,6 +319,8 @@ def _speed_count(options: tuple[OptionValue, ...]) -> int:
     ranges, per_range = options[7], options[8]
     if isinstance(ranges, str) or isinstance(per_range, str):
         return 0
+    if not (isfinite(ranges) and isfinite(per_range)):
+        return 0  # (the option's own rule reports it)
     return max(0, int(ranges) * int(per_range))
 
 
