@@ -49,14 +49,15 @@ _ARELEM_FLAGS = {
 }
 _TOKEN = re.compile(
     r"\s*(?:(?P<number>[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?)(?![A-Za-z0-9_])"
-    r"|(?P<word>[A-Za-z][A-Za-z0-9_]*)|(?P<comma>,)|(?P<end>$))"
+    r"|(?P<word>[A-Za-z][A-Za-z0-9_]*)|(?P<comma>,)|(?P<end>$))",
+    re.ASCII,  # blanks are ASCII blanks: float() takes no other (a \x1c is an error)
 )
 _NUMBER_ITEM = r"\s*[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?\s*"
-_NUMBER_LIST = re.compile(rf"{_NUMBER_ITEM}(?:,{_NUMBER_ITEM})*\Z")
-_MAJOR = re.compile(r"\s*((?:[A-Za-z]|\d+[A-Za-z])[A-Za-z0-9_]*)")
+_NUMBER_LIST = re.compile(rf"{_NUMBER_ITEM}(?:,{_NUMBER_ITEM})*\Z", re.ASCII)
+_MAJOR = re.compile(r"\s*((?:[A-Za-z]|\d+[A-Za-z])[A-Za-z0-9_]*)", re.ASCII)
 # the reader's fast path: a whole one-line "GOTO / x, y, z" (no continuation, no comment)
 _ONE_LINE_GOTO = re.compile(
-    rf"\s*GOTO\s*/({_NUMBER_ITEM}),({_NUMBER_ITEM}),({_NUMBER_ITEM})[\r\n]*\Z"
+    rf"\s*GOTO\s*/({_NUMBER_ITEM}),({_NUMBER_ITEM}),({_NUMBER_ITEM})[\r\n]*\Z", re.ASCII
 )
 
 

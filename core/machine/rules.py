@@ -60,6 +60,13 @@ def _option_values(machine: MachineDefinition) -> Iterator[Problem]:
         (8, 1, 300, "speeds per range"),
         (18, 0, 7, "number of feedrate ranges"),
         (174, 0, STORE_SIZE, "FRTAB size"),
+        (57, 1, 30, "dwell register location (REGSTR 1..30)"),
+        (164, 1, 4, "printout (GEOUT1..GEOUT4)"),
+        (96, 0, 9, "T-word layout type"),
+        (252, 0, 3, "arc centre words"),
+        (263, 0, 2, "tool offset numbering"),
+        (259, 0, 99999, "program number"),
+        (160, 1, 1000, "printout width"),
     ):
         value = machine.options[number]
         if not _whole(value) or not low <= float(value) <= high:
