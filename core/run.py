@@ -92,6 +92,7 @@ class Run:
         self.finished = False
         self._file = ""
         self._record: Record | None = None
+        self._before: Record | None = None  # the record before it (an arc goes out late)
         self.units = UnitScale(machine)
         self._output: OutputElement | None = None
         self._motion: LinearMotion | None = None
@@ -246,6 +247,12 @@ class Run:
                 overflow.where is None or overflow.where.record == record.number
             ):
                 overflow.where = record.where  # the record being posted: its file and line
+            elif (
+                overflow.where is not None
+                and self._before is not None
+                and overflow.where.record == self._before.number
+            ):
+                overflow.where = self._before.where  # an arc goes out at the next record
             elif overflow.where is not None:  # the element knows the record, the run the file
                 overflow.where = SourcePosition(self._file, None, None, overflow.where.record)
             self._stopped_by(overflow)
@@ -290,7 +297,7 @@ class Run:
         goto = MotionSubtype.GOTO
         for record in records:
             self._file = record.file
-            self._record = record
+            self._before, self._record = self._record, record
             result.records += 1
             if self.finished:
                 raise InputError("record after FINI", record.where)
