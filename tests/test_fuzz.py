@@ -25,6 +25,7 @@ import pytest
 from click.testing import CliRunner, Result
 from gecent.core import run as run_module
 from gecent.core.cli import main
+from gecent.core.plugins import get_plugins
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
@@ -32,7 +33,7 @@ from .conftest import ROOT, SHARED
 
 EXAMPLES = int(os.environ.get("GECENT_FUZZ_EXAMPLES", "40"))
 SECONDS = 20
-MACHINES = ["4", "23", "24", "linuxcnc-mill", "fanuc-mill", "fanuc-lathe", "haas-mill"]
+MACHINES = sorted(pack.name for pack in get_plugins().machines())  # every installed machine
 TEXT_SEEDS = [
     *(ROOT / "examples").glob("*.apt"),
     *(SHARED / "corpus" / "creo").glob("*.ncl.*"),

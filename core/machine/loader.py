@@ -334,7 +334,17 @@ def _parse(text: str, origin: str) -> MachineFile:
     try:
         data = tomldata.loads(text)
     except tomllib.TOMLDecodeError as exc:
-        raise InputError(f"not valid TOML: {exc}", SourcePosition(origin)) from None
+        # tomllib says "(at line L, column C)" or "(at end of document)": the position
+        message = str(exc)
+        found = re.search(r"\(at line (\d+), column (\d+)\)$", message)
+        if found:
+            where = SourcePosition(origin, int(found.group(1)), int(found.group(2)))
+        else:
+            where = SourcePosition(origin, text.count("\n") + (0 if text.endswith("\n") else 1))
+        reason = re.sub(r" \(at (line \d+, column \d+|end of document)\)$", "", message)
+        if not found:
+            reason += " (at the end of the file)"
+        raise InputError(f"not valid TOML: {reason}", where) from None
     try:
         return MachineFile.model_validate(data)
     except ValidationError as exc:
