@@ -57,6 +57,7 @@ WORDS = [
     "SELECT", "OPSKIP", "STOP", "TMARK", "LEADER", "ROTATE", "XYPLAN", "MM", "INCHES",
 ]  # fmt: skip
 NUMBER = re.compile(rb"-?\d+\.?\d*(?:[eE][-+]?\d+)?")
+MACHINE_FILE = re.compile(r"^\S+\.toml(:\d+(:\d+)?)?: error: ")
 
 
 class CaseTimeout(BaseException):
@@ -164,6 +165,8 @@ def check(tmp_path: Path, source: Path, machine: str, named: Path) -> None:
     assert "Traceback" not in output and "internal error" not in output, output
     for line in result.stderr.splitlines():
         if " error: " in f" {line}" and "warning" not in line:
+            if MACHINE_FILE.match(line):
+                continue  # what the machine itself cannot do names the machine's file
             assert line.startswith(str(named)), f"an error that names no file: {line!r}"
             if named.suffix != ".toml" and line.startswith(f"{named}:") is False:
                 raise AssertionError(f"an error that names no line or record: {line!r}")
