@@ -100,7 +100,7 @@ class MachineDefinition:
         return tuple(table[i : i + per_range] for i in range(0, len(table), per_range))
 
     def spindle_ranges(self) -> tuple[tuple[float, ...], ...]:
-        per_range = int(self.number_option(8))
+        per_range = max(1, int(self.number_option(8)))  # (option 8's own rule reports 0)
         speeds = self.spindle_speeds()
         return tuple(speeds[i : i + per_range] for i in range(0, len(speeds), per_range))
 
