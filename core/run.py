@@ -262,12 +262,9 @@ class Run:
                 error.where = self._record.where
             self._stopped_by(error)
             raise
-        except (InputError, NotYetSupported) as error:
-            if error.where is None and self._record is not None:
-                error.where = self._record.where  # every message names the file and line
-            self.sinks.close(Ending(False))
-            raise
-        except GecentError:
+        except GecentError as error:  # every message names the file and line
+            if isinstance(error, InputError | NotYetSupported) and error.where is None:
+                error.where = self._record.where if self._record is not None else None
             self.sinks.close(Ending(False))
             raise
         except Exception as error:  # a bug: reported as one, with the record being posted
