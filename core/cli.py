@@ -269,38 +269,10 @@ def post(
     is G-code for a modern control, only when --listing asks). Nothing is written into the
     input's folder unless named there. INPUT - reads the CL file from standard input."""
     _terminate_cleanly()
-    if input_path == "-":
-        with _standard_input() as spooled:
-            try:
-                _post(
-                    *(spooled, machine_key, tape_path or "stdin.tape", listing_path),
-                    *(punch_to, as_json, max_segments, general_path),
-                )
-            except GecentError as exc:  # it names standard input "-", not the spool
-                where = getattr(exc, "where", None)
-                if isinstance(where, SourcePosition) and where.file == spooled:
-                    exc.where = replace(where, file="-")  # type: ignore[attr-defined]
-                raise
-        return
-    _post(
-        *(input_path, machine_key, tape_path, listing_path),
-        *(punch_to, as_json, max_segments, general_path),
-    )
-
-
-def _post(
-    input_path: str,
-    machine_key: str | None,
-    tape_path: str | None,
-    listing_path: str | None,
-    punch_to: tuple[str, str] | None,
-    as_json: bool,
-    max_segments: int,
-    general_path: bool,
-) -> None:
     plugins = _plugins()
     override = _override(plugins, machine_key)
-    tape_target = Path(tape_path) if tape_path else Path(Path(input_path).stem + ".tape")
+    stem = "stdin" if input_path == "-" else Path(input_path).stem
+    tape_target = Path(tape_path) if tape_path else Path(stem + ".tape")
 
     def make_sinks(machine: MachineDefinition) -> Sinks:
         listing = listing_path
@@ -310,40 +282,45 @@ def _post(
             plugins, machine, tape_target, listing, punch_to, sys.stdout if as_json else None
         )
 
-    def report(diagnostic: Diagnostic) -> None:
-        click.echo(_shown(str(diagnostic), input_path), err=True)
+    with _input_file(input_path) as source:
 
-    run_post(
-        input_path,
-        plugins,
-        override,
-        _progress(input_path),
-        make_sinks,
-        report,
-        max_segments,
-        fast=not general_path,
-    )
+        def report(diagnostic: Diagnostic) -> None:
+            click.echo(
+                str(diagnostic).replace(source, "-") if source != input_path else str(diagnostic),
+                err=True,
+            )
 
-
-STDIN_SPOOL = "gecent-stdin"
+        try:
+            run_post(
+                source,
+                plugins,
+                override,
+                _progress(source),
+                make_sinks,
+                report,
+                max_segments,
+                fast=not general_path,
+            )
+        except GecentError as exc:  # standard input is named "-", not its spool
+            where = getattr(exc, "where", None)
+            if source != input_path and isinstance(where, SourcePosition) and where.file == source:
+                exc.where = replace(where, file="-")  # type: ignore[attr-defined]
+            raise
 
 
 @contextmanager
-def _standard_input() -> Iterator[str]:
-    """Standard input spooled to a temporary file (the post reads the CL file twice: the
-    first pass for MACHIN, then the run), removed afterwards."""
+def _input_file(input_path: str) -> Iterator[str]:
+    """The CL file to read: the path itself, or for "-" standard input spooled to a
+    temporary file (the post reads the CL file twice: the first pass for MACHIN, then the
+    run), removed afterwards."""
+    if input_path != "-":
+        yield input_path
+        return
     with tempfile.TemporaryDirectory(prefix="gecent-") as folder:
-        spooled = os.path.join(folder, STDIN_SPOOL)
+        spooled = os.path.join(folder, "stdin")
         with open(spooled, "wb") as handle:
             shutil.copyfileobj(sys.stdin.buffer, handle)
         yield spooled
-
-
-def _shown(message: str, input_path: str) -> str:
-    """A message about the spooled standard input names it "-"."""
-    if os.path.basename(input_path) == STDIN_SPOOL:
-        return message.replace(input_path, "-")
-    return message
 
 
 def _terminate_cleanly() -> None:

@@ -162,7 +162,7 @@ class ToolElement:
         if machine.number_option(1) == 2:
             raise NotYetSupported("T merged into the following motion block (option 1 = 2)", where)
         numbers = _plain_numbers(statement)
-        offset = _offset(statement)
+        offset = _value_after(statement, "OFSETL")
         if not 1 <= len(numbers) <= positions or any(n < 0 or n != int(n) for n in numbers):
             expected = "one tool number" if positions == 1 else "a tool and a turret position"
             raise InputError(
@@ -275,12 +275,14 @@ def _plain_numbers(statement: Statement) -> list[float]:
 
 
 def _value_after(statement: Statement, name: str) -> int | None:
-    """ADJUST, h: a whole offset number 0-99 (or LENGTH, l: a length, checked positive)."""
+    """OFSETL, k or ADJUST, h: a whole offset number 0-99 (LENGTH, l: a length, checked
+    positive); None when the word is not given."""
     args = statement.args
     for index, arg in enumerate(args):
         if isinstance(arg, Word) and arg.name == name:
             if index + 1 >= len(args) or isinstance(args[index + 1], Word):
-                raise InputError(f"{statement.major} {name} expects a value", statement.where)
+                what = "a length" if name == "LENGTH" else "an offset number"
+                raise InputError(f"{statement.major} {name} expects {what}", statement.where)
             value = float(args[index + 1])  # type: ignore[arg-type]
             if name == "LENGTH":
                 if not value > 0:
@@ -292,24 +294,6 @@ def _value_after(statement: Statement, name: str) -> int | None:
             if value < 0 or value != int(value) or value > 99:
                 raise InputError(
                     f"{statement.major} {name} expects an offset number 0-99, found {value:g}",
-                    statement.where,
-                )
-            return int(value)
-    return None
-
-
-def _offset(statement: Statement) -> int | None:
-    args = statement.args
-    for index, arg in enumerate(args):
-        if isinstance(arg, Word) and arg.name == "OFSETL":
-            if index + 1 >= len(args) or isinstance(args[index + 1], Word):
-                raise InputError(
-                    f"{statement.major} OFSETL expects an offset number", statement.where
-                )
-            value = float(args[index + 1])  # type: ignore[arg-type]
-            if value < 0 or value != int(value) or value > 99:
-                raise InputError(
-                    f"{statement.major} OFSETL expects an offset 0-99, found {value:g}",
                     statement.where,
                 )
             return int(value)

@@ -302,7 +302,6 @@ class FastLinear:
             pending.rpm = None
             number = record.number
             numbered = not numbering.off
-            series = numbering.series
             if not numbered:
                 sequence = 0
             elif series is not None:  # SEQNO's series, or counting blocks (option 143 = 1)

@@ -108,18 +108,6 @@ class RegisterFormatter:
         printed, punched = self.texts(units, value < 0, value, suppress_leading)
         return Formatted(printed, punched)
 
-    def format_units(
-        self,
-        units: int,
-        negative: bool,
-        value: float | None = None,
-        suppress_leading: int | None = None,
-    ) -> Formatted:
-        """The same, from the magnitude in units of the format's last decimal (a whole
-        number of steps on the fast path); ``value`` is only for an overflow's message."""
-        printed, punched = self.texts(units, negative, value, suppress_leading)
-        return Formatted(printed, punched)
-
     def texts(
         self,
         units: int,

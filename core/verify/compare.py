@@ -170,18 +170,15 @@ class _Walk:
         state = target.machine
         if state is None:
             return None
-        # (inside a canned cycle the control reverses the spindle to tap out: its sense is
-        # the control's there)
-        in_cycle = target.kind == "cycle"
-        if state.spindle is not None and state.spindle != move.spindle:
-            if in_cycle and move.spindle != 0 and state.spindle != 0:
-                pass
-            elif move.spindle == 0:
+        # inside a canned cycle the control reverses the spindle to tap out: the sense is
+        # the control's there
+        tapping_out = target.kind == "cycle" and move.spindle != 0 and state.spindle != 0
+        if state.spindle is not None and state.spindle != move.spindle and not tapping_out:
+            if move.spindle == 0:
                 return "the spindle is stopped where the CL cuts"
-            elif state.spindle == 0:
+            if state.spindle == 0:
                 return "the spindle turns where the CL has it off"
-            else:
-                return "the spindle turns the other way than the CL's SPINDL"
+            return "the spindle turns the other way than the CL's SPINDL"
         if state.tool is not None and state.tool != move.tool:
             return f"tool T{move.tool} cuts where the CL has loaded T{state.tool}"
         if state.side is not None and state.side != move.side:
