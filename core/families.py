@@ -13,6 +13,7 @@ transform classes         register_transform_classes option 116
 printouts                 register_printouts         option 164
 MACFUN                    register_macfuns           option 133 and the machine
 CL readers                register_cl_readers        the input file's content
+macros                    register_macros            the machine (spec 09)
 ========================  =========================  ===========================
 """
 
@@ -69,6 +70,7 @@ FAMILIES: tuple[FamilySpec, ...] = (
     FamilySpec("printouts", "register_printouts", "number", option=164, numbers=_numbers(1, 4)),
     FamilySpec("macfuns", "register_macfuns", "name"),
     FamilySpec("readers", "register_cl_readers", "name"),
+    FamilySpec("macros", "register_macros", "key"),
 )
 FAMILY_BY_NAME = {family.name: family for family in FAMILIES}
 

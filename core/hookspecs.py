@@ -66,3 +66,8 @@ def register_macfuns(register: Register) -> None:
 @hookspec
 def register_cl_readers(register: Register) -> None:
     """Register CL file readers (:class:`gecent.core.families.ClReader`)."""
+
+
+@hookspec
+def register_macros(register: Register) -> None:
+    """Register macros: event and user-defined (:class:`gecent.core.macros.model.Macro`)."""

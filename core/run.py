@@ -22,7 +22,9 @@ from gecent.core.cl.records import (
     Statement,
     Surface,
 )
+from gecent.core.cl.stream import Lookahead
 from gecent.core.cl.vocabulary import vocabulary
+from gecent.core.dispatch.context import Post
 from gecent.core.dump import state_dump
 from gecent.core.errors import (
     Diagnostic,
@@ -37,6 +39,9 @@ from gecent.core.errors import (
 from gecent.core.feed.positioning import FeedType
 from gecent.core.feed.rapid import MODAL, RapidTraverse
 from gecent.core.machine.definition import MachineDefinition
+from gecent.core.macros.engine import MacroEngine
+from gecent.core.macros.install import install_macros
+from gecent.core.macros.table import MacroTable
 from gecent.core.motion.circle import CircularMotion
 from gecent.core.motion.control_cycles import ControlCycles
 from gecent.core.motion.cycles import Cycle, cycle_legs
@@ -60,7 +65,7 @@ from gecent.core.plugins import PluginSet, get_plugins, macfun_handler
 from gecent.core.reinstate import restat
 from gecent.core.spindle import SpindleElement
 from gecent.core.state import PostState, RunResult
-from gecent.core.statements import handlers
+from gecent.core.statements import Handler, handlers
 from gecent.core.statements.threading import RAPID_THREAD
 from gecent.core.tool import ToolElement
 from gecent.core.units import UnitScale
@@ -112,7 +117,13 @@ class Run:
         self._units_checked = not modern_output(machine)
         self.state.max_segments = max_segments
         self._statements = handlers()
-        self._statements["UNITS"] = lambda run, statement: run.units.set_units(statement)
+        self._statements["UNITS"] = _units
+        self._builtin_statements = dict(self._statements)
+        self.macros: MacroEngine | None = None
+        self._motion_record: Callable[[Motion], None] = self.motion_builtin
+        table = MacroTable.for_machine(plugins or get_plugins(), machine)
+        if table is not None:
+            self.macros = install_macros(self, table)
 
     @property
     def machine(self) -> MachineDefinition:
@@ -123,6 +134,8 @@ class Run:
         if self._output is None:
             self._output = OutputElement(self.state)
             self._output.emit = self.sinks.emit
+            if self.macros is not None:
+                self.macros.hooks.output_element(self._output)
             if self.machine.number_option(1) != 0:
                 self._output.positioning_feed = self.feed_type
         return self._output
@@ -219,6 +232,17 @@ class Run:
             self._tool_element = ToolElement(self.state, self.output, self.warn)
         return self._tool_element
 
+    @property
+    def current_record(self) -> Record | None:
+        return self._record
+
+    def builtin(self, record: Record) -> None:
+        """A record's built-in processing (a macro's OUTPUT, a command it issues)."""
+        self._general(self.units.record(record))
+
+    def builtin_statement(self, major: str) -> Handler:
+        return self._builtin_statements[major]
+
     def warn(self, diagnostic: Diagnostic) -> None:
         self.result.warnings += 1
         if self.report is not None:
@@ -230,6 +254,8 @@ class Run:
                 Code.COMMENT, diagnostic.where.record if diagnostic.where else None, diagnostic.text
             )
         )
+
+    warn_builtin = warn  # (a diagnostic macro takes ``warn``'s place and calls this)
 
     def text_block(self, block: Block) -> None:
         """Text blocks bypass OUTPUT: they take no N and leave the pending S and M alone."""
@@ -287,6 +313,8 @@ class Run:
     def _process(self, records: Iterator[Record]) -> RunResult:
         for text in program_start(self.machine, self.state.numbering):
             self.text_block(Block(Code.INSERT, None, text))
+        if self.macros is not None:
+            return self._process_macros(records)
         fast: FastLinear | None = None
         result = self.result
         state = self.state
@@ -312,6 +340,55 @@ class Run:
             fast = self._fast_path()
         if self._circle is not None and self._circle.collecting:
             self._circle.finish()
+        return self._finish()
+
+    def _process_macros(self, records: Iterator[Record]) -> RunResult:
+        """The record loop with a macro engine (core/macros): each record is matched
+        against the user-defined macros; the fast path serves GOTOs only when no macro
+        can see them."""
+        engine = self.macros
+        assert engine is not None
+        stream = engine.records = Lookahead(records)
+        engine.start()
+        fast_ok = engine.hooks.fast_path_allowed()
+        fast: FastLinear | None = None
+        goto = MotionSubtype.GOTO
+        for record in stream:
+            if fast_ok and type(record) is Motion and record.subtype is goto:
+                self._next_record(record)
+                circle = self._circle
+                if fast is None and circle is not None and circle.collecting:
+                    circle.finish()
+                    fast = self._fast_path()
+                if fast is not None and fast.goto(record):
+                    continue
+                fast = None
+                engine.dispatch(record)
+                fast = self._fast_path()
+                continue
+            self.take(record)
+            fast = self._fast_path() if fast_ok else None
+        return self.end_of_input()
+
+    def _next_record(self, record: Record) -> None:
+        self._file = record.file
+        self._before, self._record = self._record, record
+        self.result.records += 1
+        if self.finished:
+            raise InputError("record after FINI", record.where)
+        self.state.sequence = record.number
+
+    def take(self, record: Record) -> None:
+        """One record from the CL file through the macro engine."""
+        assert self.macros is not None
+        self._next_record(record)
+        self.macros.dispatch(record)
+
+    def end_of_input(self) -> RunResult:
+        if self._circle is not None and self._circle.collecting:
+            self._circle.finish()
+        if not self.finished and self.macros is not None:
+            self.macros.finish(None)
         return self._finish()
 
     def _fast_path(self) -> FastLinear | None:
@@ -368,6 +445,8 @@ class Run:
         elif isinstance(record, Circle):
             self.circle.surface(record)  # ignored on a linear-only control (option 9 = 0)
         elif isinstance(record, Fini):
+            if self.macros is not None:
+                self.macros.finish(record)
             self.output.finish_program(record.number)
             for text in program_end(self.machine):
                 self.text_block(Block(Code.INSERT, record.number, text))
@@ -408,7 +487,7 @@ class Run:
             note = notes.pop(0)
             self.warn(Diagnostic(note.text, note.where or record.where))
 
-    def _motion_record(self, record: Motion) -> None:
+    def motion_builtin(self, record: Motion) -> None:
         control = self.machine.number_option(1)
         if control not in (0.0, 1.0, 2.0, -1.0):  # 3: the 7500's mixed control
             raise NotYetSupported(f"motion with option 1 = {control:g}", record.where)
@@ -469,20 +548,34 @@ class Run:
                 feed.rapid_requested = False  # the control positions at rapid itself
                 if feed.rapid_mode:
                     self.rapid.leave()
-                self.control_cycles.hole(self.cycle, record.number, hole, self.cycle_first_z)
+                if self.macros is not None:
+                    self.macros.hooks.cycle(record, at, hole, self.cycle_first_z)
+                else:
+                    self.control_cycles.hole(self.cycle, record.number, hole, self.cycle_first_z)
                 continue
-            if self.cycle.kind == "DEEP" and self.cycle.step:
-                pecks = int(min(abs(self.cycle.depth / self.cycle.step), 1e18))
-                check_segments(pecks, self.state.max_segments, record.where, "deep-hole cycle")
-            for leg in cycle_legs(self.cycle, at, hole, self.cycle_first_z):
-                if leg.dwell:
-                    block = self.output.dwell(leg.dwell)
-                    block.record = record.number
-                    self.output.output(block)
-                code = None if leg.m_code_cell is None else self.machine.m_code(leg.m_code_cell)
-                if code is not None:
-                    self.output.store_m(code)
-                self._leg(record, leg.point, leg.rapid)
+            self.simulated_hole(record, at, hole)
+
+    def simulated_hole(
+        self,
+        record: Motion,
+        at: tuple[float, float, float],
+        hole: tuple[float, float, float],
+    ) -> None:
+        """A hole by rapid and feed moves (core/motion/cycles.py)."""
+        cycle = self.cycle
+        assert cycle is not None and self.cycle_first_z is not None
+        if cycle.kind == "DEEP" and cycle.step:
+            pecks = int(min(abs(cycle.depth / cycle.step), 1e18))
+            check_segments(pecks, self.state.max_segments, record.where, "deep-hole cycle")
+        for leg in cycle_legs(cycle, at, hole, self.cycle_first_z):
+            if leg.dwell:
+                block = self.output.dwell(leg.dwell)
+                block.record = record.number
+                self.output.output(block)
+            code = None if leg.m_code_cell is None else self.machine.m_code(leg.m_code_cell)
+            if code is not None:
+                self.output.store_m(code)
+            self._leg(record, leg.point, leg.rapid)
 
     def _leg(self, record: Motion, point: tuple[float, float, float], rapid: bool) -> None:
         leg = Motion(record.file, record.line, record.number, MotionSubtype.GOTO, (point,))
@@ -492,6 +585,10 @@ class Run:
         if feed.rapid_requested or feed.rapid_mode:
             self.rapid.motion(path_length(self.state.position, leg))
         self.motion.record(leg)
+
+
+def _units(run: Post, statement: Statement) -> None:
+    run.units.set_units(statement)
 
 
 AFTER_END = "END OR RESET HAS NOT BEEN FOLLOWED BY A FROM POINT."  # comment 47 (L34080)

@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-from collections import deque
 from collections.abc import Callable, Iterable, Iterator
 
 from gecent.core.cl.binary_layout import Layout
@@ -50,22 +49,32 @@ class Lookahead:
     LOADTL, macros the next records: each peeks, and memory holds only what was peeked.
     """
 
-    __slots__ = ("_buffer", "_records")
+    __slots__ = ("_buffer", "_records", "_start")
 
     def __init__(self, records: Iterable[Record]) -> None:
         self._records = iter(records)
-        self._buffer: deque[Record] = deque()
+        self._buffer: list[Record] = []
+        self._start = 0  # the next record's index in the buffer
 
     def __iter__(self) -> Lookahead:
         return self
 
     def __next__(self) -> Record:
-        if self._buffer:
-            return self._buffer.popleft()
+        buffer = self._buffer
+        if self._start < len(buffer):
+            record = buffer[self._start]
+            self._start += 1
+            if self._start == len(buffer):
+                buffer.clear()
+                self._start = 0
+            elif self._start >= 4096 and 2 * self._start >= len(buffer):
+                del buffer[: self._start]  # what was consumed goes (memory stays bounded)
+                self._start = 0
+            return record
         return next(self._records)
 
     def _fill(self, count: int) -> bool:
-        while len(self._buffer) < count:
+        while len(self._buffer) - self._start < count:
             record = next(self._records, None)
             if record is None:
                 return False
@@ -76,16 +85,21 @@ class Lookahead:
         """The record ``ahead`` places on (1 = the next one), or None past the end."""
         if ahead < 1:
             raise ValueError("peek looks at least one record ahead")
-        return self._buffer[ahead - 1] if self._fill(ahead) else None
+        return self._buffer[self._start + ahead - 1] if self._fill(ahead) else None
 
-    def find(self, wanted: Callable[[Record], bool], limit: int | None = None) -> Record | None:
-        """The first record ahead that is ``wanted``, looking at most ``limit`` records on."""
+    def ahead(self, limit: int | None = None) -> Iterator[Record]:
+        """The records still to come, read (and held) without consuming them."""
         ahead = 1
         while limit is None or ahead <= limit:
             record = self.peek(ahead)
             if record is None:
-                return None
+                return
+            yield record
+            ahead += 1
+
+    def find(self, wanted: Callable[[Record], bool], limit: int | None = None) -> Record | None:
+        """The first record ahead that is ``wanted``, looking at most ``limit`` records on."""
+        for record in self.ahead(limit):
             if wanted(record):
                 return record
-            ahead += 1
         return None

@@ -65,19 +65,20 @@ class ControlCycles:
         record: int,
         hole: tuple[float, float, float],
         first_z: float,
+        levels: tuple[float, float, float] | None = None,
     ) -> None:
-        """One hole: the cycle block; the tool ends at (x, y, the return level)."""
+        """One hole: the cycle block; the tool ends at (x, y, the return level).
+        ``levels`` (R plane, bottom, return level) replace the cycle's own (a cycle macro's
+        $P11, $P13, $P15)."""
         if cycle.kind == "TAP" and self.state.spindle.direction < 0:
             # G84 taps right-handed (M03): a left-hand tap is G74, which no TABLEG names yet
             raise NotYetSupported(
                 "CYCLE/TAP with the spindle CCLW (a left-hand tap, G74) by the control's cycle"
             )
         position = self.state.position
-        tx, ty, tz = position.translation
-        x, y, top = hole[0] + tx, hole[1] + ty, hole[2] + tz
-        plane = top + cycle.clearance - cycle.rapto
-        bottom = top - cycle.depth
-        back = plane if cycle.return_level is None else max(first_z + tz, plane)
+        tx, ty, _ = position.translation
+        x, y = hole[0] + tx, hole[1] + ty
+        plane, bottom, back = levels or self.levels(cycle, hole, first_z)
         machine = self.machine
         location = RETURN_R_PLANE if cycle.return_level is None else RETURN_INITIAL
         code = machine.g_code(location)
@@ -114,6 +115,17 @@ class ControlCycles:
         position.present[:3] = list(reached)
         position.previous_part[:] = position.present_part
         position.previous[:] = position.present
+
+    def levels(
+        self, cycle: Cycle, hole: tuple[float, float, float], first_z: float
+    ) -> tuple[float, float, float]:
+        """The R plane, the bottom and the return level of a hole (machine units, with
+        TRANS), as :meth:`hole` works them out."""
+        tz = self.state.position.translation[2]
+        top = hole[2] + tz
+        plane = top + cycle.clearance - cycle.rapto
+        back = plane if cycle.return_level is None else max(first_z + tz, plane)
+        return plane, top - cycle.depth, back
 
     def off(self, record: int) -> None:
         """CYCLE/OFF: G80 (TABLEG(1)) when a cycle block went out."""

@@ -200,6 +200,7 @@ class FastLinear:
                 text = formatter.format(value)
                 found = texts[formatter, value] = (text.printed, text.punched)
             return found
+
         slots = [
             (location, formatter, axis, sign, factor, scale, formatter.texts, letter)
             for (location, formatter, axis, sign, factor, scale) in self.slots

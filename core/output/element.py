@@ -31,7 +31,7 @@ from gecent.core.output.modern import (
     ModernControl,
     machine_planes,
 )
-from gecent.core.output.words import WordFormatter
+from gecent.core.output.words import Word, WordFormatter
 from gecent.core.state import SPINDLE_COMMAND, PostState
 
 CIRCLE_CODES = frozenset(
@@ -94,6 +94,8 @@ class OutputElement:
         self.sequence_limit = 10**n_format.left - 1 if n_format is not None else 1 << 62
         # where finished blocks go (core/output/sinks.py); the run sets it
         self.emit: Callable[[Block], None] = _nowhere
+        # a register macro's place (core/macros): each block's words pass through it
+        self.register_hook: Callable[[Block, list[Word]], list[Word]] | None = None
         self.diagnostics: list[Diagnostic] = []
         self.assumed_feed = False
         # a positioning machine's feed type (option 78), set by the run; CYCLE/MILL in force
@@ -529,6 +531,8 @@ class OutputElement:
             sequence=self.state.sequence,
             absolute=placed or code in ABSOLUTE_CODES,
         )
+        if self.register_hook is not None:
+            words = self.register_hook(block, words)
         if modern.active:
             if block.cells[13] is not ABSENT:
                 modern.forget()  # a tool change: the next move states every axis

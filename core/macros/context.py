@@ -1,0 +1,191 @@
+"""What a macro body sees: ``ctx`` (spec 09 §13.3).
+
+=====================  ============================================
+macro language         Python
+=====================  ============================================
+``OUTPUT``             ``ctx.output()``
+``MATCH/ON|OFF``       ``ctx.match(True|False)``
+``TERMAC``             ``ctx.terminate()``
+``$P2``, ``$P2(3)``    ``ctx.p[2]``, ``ctx.p[2][2]`` (tuples are 0-based in Python)
+``COOLNT/FLOOD``       ``ctx.cmd("COOLNT/FLOOD")`` or ``ctx.cmd("COOLNT", "FLOOD")``
+``GOTO/x,y,z``         ``ctx.goto(x, y, z)`` (also ``from_``, ``godlta``)
+``INSERT/text``        ``ctx.insert("M07")``; ``ctx.pprint(text)``
+``$NT``, ``$NXM``      ``ctx.next.tool``, ``ctx.next.motion.xm``
+``$LOOKAH``, ``$TLOOK``  ``ctx.la.active``, ``ctx.la.tool``, ``ctx.la.motion``
+``$FT``, ``$TAPMAC``   ``ctx.sv.FT``, ``ctx.sv.TAPMAC`` (also ``ctx.sv["$FT"]``)
+%L01, GLOBAL           ``ctx.locals``, ``ctx.globals`` (dicts)
+=====================  ============================================
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING, Any, NoReturn, Protocol
+
+from gecent.core.macros.host import MacroHost
+from gecent.core.macros.model import TerminateMacro
+from gecent.core.macros.params import PParams
+
+if TYPE_CHECKING:
+    from gecent.core.cl.records import Record
+    from gecent.core.machine.definition import MachineDefinition
+    from gecent.core.macros.model import Macro
+    from gecent.core.state import PostState
+
+
+class Engine(Protocol):
+    """What a macro body reaches of the engine (core/macros/engine.py)."""
+
+    run: MacroHost
+    globals: dict[str, Any]
+    sv: Any
+    flags: LookaheadFlags
+
+    def look(self, kind: str, frame: Frame) -> Any: ...
+
+    def output(self, frame: Frame) -> None: ...
+
+    def command(self, frame: Frame, text: str) -> None: ...
+
+    def text(self, frame: Frame, major: str, text: str) -> None: ...
+
+    def warn(self, frame: Frame, text: str) -> None: ...
+
+
+@dataclass
+class Frame:
+    """One activation of a macro: its $P, its locals, its MATCH state and what OUTPUT does
+    for it; look-ahead results are cached per frame (§7.3)."""
+
+    macro: Macro
+    params: PParams
+    record: Record | None
+    locals: dict[str, Any]
+    on_output: Callable[[Frame], None] | None = None
+    matching: bool = True
+    outputs: int = 0
+    looked: dict[str, Any] = field(default_factory=dict)
+
+
+@dataclass(frozen=True)
+class NextMotion:
+    """The next motion's end point (§7.2): machine values ``xm``... and CL values ``xc``..."""
+
+    xm: float
+    ym: float
+    zm: float
+    xc: float
+    yc: float
+    zc: float
+    record: int | None = None
+
+
+class _Next:
+    def __init__(self, engine: Engine, frame: Frame) -> None:
+        self._engine = engine
+        self._frame = frame
+
+    @property
+    def tool(self) -> float | None:
+        """$NT: the tool of the next tool change after the record that invoked this macro,
+        None when there is none (or when a look-ahead is running already, §7.3 step 2)."""
+        return self._engine.look("tool", self._frame)  # type: ignore[no-any-return]
+
+    @property
+    def motion(self) -> NextMotion | None:
+        """$NXM...: the next motion's end point; the current position when none follows
+        (§7.3), None inside another look-ahead."""
+        return self._engine.look("motion", self._frame)  # type: ignore[no-any-return]
+
+
+@dataclass(frozen=True)
+class LookaheadFlags:
+    active: bool = False  # $LOOKAH
+    tool: bool = False  # $TLOOK
+    motion: bool = False  # $MLOOK
+
+
+class MacroContext:
+    def __init__(self, engine: Engine, frame: Frame) -> None:
+        self._engine = engine
+        self._frame = frame
+
+    @property
+    def p(self) -> PParams:
+        return self._frame.params
+
+    @property
+    def record(self) -> Record | None:
+        """The record that invoked the macro (a user macro: the record it matched)."""
+        return self._frame.record
+
+    @property
+    def locals(self) -> dict[str, Any]:
+        return self._frame.locals
+
+    @property
+    def globals(self) -> dict[str, Any]:
+        return self._engine.globals
+
+    @property
+    def sv(self) -> Any:
+        return self._engine.sv
+
+    @property
+    def next(self) -> _Next:
+        return _Next(self._engine, self._frame)
+
+    @property
+    def la(self) -> LookaheadFlags:
+        return self._engine.flags
+
+    @property
+    def machine(self) -> MachineDefinition:
+        return self._engine.run.machine
+
+    @property
+    def state(self) -> PostState:
+        """The post's state, to read (writing it bypasses the post's own bookkeeping)."""
+        return self._engine.run.state
+
+    def output(self) -> None:
+        self._engine.output(self._frame)
+
+    def match(self, on: bool) -> None:
+        self._frame.matching = bool(on)
+
+    def terminate(self) -> NoReturn:
+        raise TerminateMacro
+
+    def cmd(self, major: str, *args: str | float) -> None:
+        """A post-processor command, as an APT statement: ``cmd("SPINDL/300,CLW")`` or
+        ``cmd("SPINDL", 300, "CLW")``."""
+        text = major if not args else f"{major}/" + ",".join(_item(a) for a in args)
+        self._engine.command(self._frame, text)
+
+    def goto(self, x: float, y: float, z: float, *axis: float) -> None:
+        self.cmd("GOTO", x, y, z, *axis)
+
+    def from_(self, x: float, y: float, z: float, *axis: float) -> None:
+        self.cmd("FROM", x, y, z, *axis)
+
+    def godlta(self, *deltas: float) -> None:
+        self.cmd("GODLTA", *deltas)
+
+    def insert(self, text: str) -> None:
+        """INSERT/text: a block punched as written."""
+        self._engine.text(self._frame, "INSERT", text)
+
+    def pprint(self, text: str) -> None:
+        self._engine.text(self._frame, "PPRINT", text)
+
+    def warn(self, text: str) -> None:
+        """A diagnostic in the listing and on stderr (the run goes on)."""
+        self._engine.warn(self._frame, text)
+
+
+def _item(value: str | float) -> str:
+    if isinstance(value, str):
+        return value
+    return repr(float(value))

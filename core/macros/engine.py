@@ -1,0 +1,317 @@
+"""The macro engine of one run (spec 09 §1-§6): matching records against user-defined
+macros, running event macros around the post's built-in actions, OUTPUT, MATCH and TERMAC.
+
+Processing model (§1, 002 L1-23, L136-138)::
+
+    record -> the first inactive user macro whose SDL matches (if matching is on)
+                 its body runs; OUTPUT passes the record on: the next inactive match, else
+                 built-in processing
+           -> built-in processing; an event-bearing record runs
+                 startup macro -> built-in action -> shutdown macro
+
+The hooks the run installs are bound methods of this engine, so a snapshot of the run
+(look-ahead, :mod:`gecent.core.macros.lookahead`) carries its own engine and never writes to
+the real outputs.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from typing import TYPE_CHECKING, Any
+
+from gecent.core.cl.apt_source import TEXT_MAJORS, AptSourceReader
+from gecent.core.cl.records import Record, Statement
+from gecent.core.cl.vocabulary import vocabulary
+from gecent.core.errors import Diagnostic, GecentError, InputError
+from gecent.core.macros.context import Frame, LookaheadFlags, MacroContext
+from gecent.core.macros.host import MacroHost
+from gecent.core.macros.lookahead import look_ahead
+from gecent.core.macros.model import (
+    NO_COMMANDS,
+    OUTPUT_ALLOWED,
+    Found,
+    Kind,
+    Macro,
+    MacroError,
+    Phase,
+    TerminateMacro,
+)
+from gecent.core.macros.params import NoParams, PParams, SyntaxParams
+from gecent.core.macros.sysvars import SystemVariables
+from gecent.core.macros.table import MacroTable
+
+if TYPE_CHECKING:
+    from gecent.core.cl.stream import Lookahead
+
+Action = Callable[[], None]
+MAX_DEPTH = 200  # nested activations: a macro that keeps issuing what matches another
+
+
+class MacroFailure(InputError):
+    """A macro stopped the run: its own exception, or a rule of its kind it broke. The
+    message names the macro; the position is the record it was working on."""
+
+
+class MacroEngine:
+    def __init__(self, table: MacroTable, run: MacroHost) -> None:
+        self.table = table
+        self.run = run
+        self.frames: list[Frame] = []
+        self.globals: dict[str, Any] = {}
+        self.sv = SystemVariables(self)
+        self.flags = LookaheadFlags()
+        self.looking: str | None = None  # the look-ahead this (snapshot) engine runs
+        self.records: Lookahead | None = None
+        self._running: set[Kind] = set()  # event kinds in progress: no re-entry (§4.2 rule 3)
+        self._occurrences: dict[str, int] = {}
+        self.hooks: Any = None  # the EventHooks install_macros puts in
+
+    # -- user-defined macros -------------------------------------------------------------
+
+    def dispatch(self, record: Record) -> None:
+        """A record read from the CL file."""
+        self._match_or_builtin(record, matching=True)
+
+    def _active(self) -> set[int]:
+        return {id(frame.macro) for frame in self.frames}
+
+    def _match_or_builtin(self, record: Record, matching: bool) -> None:
+        if matching and self.table.syntax:
+            active = self._active()
+            for macro in self.table.candidates(record):
+                if id(macro) in active:
+                    continue
+                assert macro.parsed is not None
+                values = macro.parsed.match(record)
+                if values is None:
+                    continue
+                params = SyntaxParams()
+                for number, value in values.items():
+                    params.set(number, value)
+                if macro.body is None:
+                    return  # an SDL with no body ignores what it matches (§6.1)
+                frame = Frame(macro, params, record, {}, on_output=self._output_record)
+                self._run(frame)
+                return
+        self.run.builtin(record)
+
+    def _output_record(self, frame: Frame) -> None:
+        assert frame.record is not None
+        self._match_or_builtin(frame.record, frame.matching)
+
+    # -- running a macro -----------------------------------------------------------------
+
+    def _run(self, frame: Frame) -> None:
+        if len(self.frames) >= MAX_DEPTH:
+            raise MacroFailure(
+                f"macro {frame.macro.key}: more than {MAX_DEPTH} macros nested "
+                "(a macro keeps issuing records that start another)",
+                self._where(frame),
+            )
+        body = frame.macro.body
+        assert body is not None
+        self.frames.append(frame)
+        try:
+            body(MacroContext(self, frame))
+        except TerminateMacro:
+            pass
+        except (GecentError, Found):
+            raise
+        except MacroError as error:
+            raise MacroFailure(f"macro {frame.macro.key}: {error}", self._where(frame)) from None
+        except Exception as error:  # the pack's bug: named, with the record it was on
+            raise MacroFailure(
+                f"macro {frame.macro.key} failed: {type(error).__name__}: {error}",
+                self._where(frame),
+            ) from error
+        finally:
+            self.frames.pop()
+
+    def _where(self, frame: Frame) -> Any:
+        record = frame.record or self.run.current_record
+        return None if record is None else record.where
+
+    def output(self, frame: Frame) -> None:
+        if frame.macro.slot not in OUTPUT_ALLOWED or frame.on_output is None:
+            raise MacroError(f"OUTPUT is not allowed in a {_describe(frame.macro)} macro (§3)")
+        frame.outputs += 1
+        frame.on_output(frame)
+
+    def command(self, frame: Frame, text: str) -> None:
+        """A post-processor or motion command issued by a macro, read as APT source."""
+        self._commands_allowed(frame)
+        origin = frame.record or self.run.current_record
+        reader = AptSourceReader(origin.file if origin is not None else "")
+        number = origin.number if origin is not None else 0
+        line = origin.line if origin is not None else None
+        try:
+            records = list(reader.read_lines([text]))
+        except InputError as error:
+            raise MacroError(f"command {text!r}: {error.message}") from None
+        for record in records:
+            record.line, record.number = line, number
+            self._match_or_builtin(record, frame.matching)
+
+    def text(self, frame: Frame, major: str, text: str) -> None:
+        self._commands_allowed(frame)
+        origin = frame.record or self.run.current_record
+        record = Statement(
+            origin.file if origin is not None else "",
+            origin.line if origin is not None else None,
+            origin.number if origin is not None else 0,
+            major,
+            vocabulary().major_code(major),
+            (),
+            text,
+        )
+        assert major in TEXT_MAJORS
+        self._match_or_builtin(record, frame.matching)
+
+    def _commands_allowed(self, frame: Frame) -> None:
+        if frame.macro.kind in NO_COMMANDS:
+            raise MacroError(f"a {_describe(frame.macro)} macro issues no commands (§4.3)")
+
+    def warn(self, frame: Frame, text: str) -> None:
+        record = frame.record or self.run.current_record
+        self.run.warn(Diagnostic(text, record.where if record is not None else None))
+
+    # -- event macros --------------------------------------------------------------------
+
+    def enabled(self, kind: Kind) -> bool:
+        switch = _SWITCH.get(kind)
+        return switch is None or bool(self.sv.get(switch))
+
+    def event(
+        self,
+        kind: Kind,
+        params: PParams,
+        record: Record | None,
+        builtin: Action,
+        *,
+        proceed: Callable[[PParams], bool] | None = None,
+        then: Callable[[PParams], bool] | None = None,
+    ) -> None:
+        """Startup macro, built-in action, shutdown macro (§4.2); ``proceed`` reads the $P
+        the startup macro left and says whether the action (and the shutdown) still run,
+        ``then`` whether the shutdown does after the action."""
+        startup = self.table.event(kind, Phase.STARTUP)
+        shutdown = self.table.event(kind, Phase.SHUTDOWN)
+        if (
+            (startup is None and shutdown is None)
+            or kind in self._running
+            or not self.enabled(kind)
+        ):
+            builtin()
+            return
+        shared: dict[str, Any] = {}
+        done = False
+
+        def once(frame: Frame) -> None:
+            nonlocal done
+            if proceed is not None and not proceed(params):
+                return
+            if not done:
+                done = True
+                builtin()
+
+        self._running.add(kind)
+        try:
+            if startup is not None:
+                frame = Frame(startup, params, record, shared, on_output=once)
+                self._run(frame)
+            if proceed is not None and not proceed(params):
+                return
+            if not done:
+                done = True
+                builtin()
+            if shutdown is not None and (then is None or then(params)):
+                local = {} if kind is Kind.MACHINE else shared  # §4.2: machine keeps none
+                self._run(Frame(shutdown, params, record, local))
+        finally:
+            self._running.discard(kind)
+
+    def single(
+        self, kind: Kind, params: PParams, record: Record | None, on_output: Callable[[Frame], None]
+    ) -> Frame | None:
+        """A single event macro (register, tape, diagnostic, ...): its frame after it ran,
+        or None when none is installed, enabled and not already running."""
+        macro = self.table.event(kind, Phase.EVENT)
+        if macro is None or kind in self._running or not self.enabled(kind):
+            return None
+        frame = Frame(macro, params, record, {}, on_output=on_output)
+        self._running.add(kind)
+        try:
+            self._run(frame)
+        finally:
+            self._running.discard(kind)
+        return frame
+
+    def run_event(self, macro: Macro, params: PParams, record: Record | None) -> None:
+        """One macro of a pair the caller sequences itself (break: shutdown first)."""
+        if macro.kind in self._running:
+            return
+        self._running.add(macro.kind)
+        try:
+            self._run(Frame(macro, params, record, {}))
+        finally:
+            self._running.discard(macro.kind)
+
+    def start(self) -> None:
+        """The declaration macro, then machine startup (§5.1, §5.2)."""
+        declaration = self.table.event(Kind.DECLARATION, Phase.EVENT)
+        if declaration is not None:
+            self._run(Frame(declaration, NoParams(), None, {}))
+        startup = self.table.event(Kind.MACHINE, Phase.STARTUP)
+        if startup is not None:
+            self._run(Frame(startup, NoParams(), None, {}))
+
+    def finish(self, record: Record | None) -> None:
+        """Machine shutdown: at FINI, at the end of a file without one, and when a
+        look-ahead reaches FINI (§5.2, §7.6)."""
+        shutdown = self.table.event(Kind.MACHINE, Phase.SHUTDOWN)
+        if shutdown is not None and Kind.MACHINE not in self._running:
+            self._running.add(Kind.MACHINE)
+            try:
+                self._run(Frame(shutdown, NoParams(), record, {}))
+            finally:
+                self._running.discard(Kind.MACHINE)
+
+    # -- look-ahead ----------------------------------------------------------------------
+
+    def look(self, kind: str, frame: Frame) -> Any:
+        """A look-ahead variable (§7.3): cached in the frame; None inside another
+        look-ahead (step 2); else a snapshot of the run searches forward."""
+        if kind in frame.looked:
+            return frame.looked[kind]
+        if self.looking is not None:
+            return None
+        if frame.macro.kind in _NO_LOOKAHEAD:
+            raise MacroError(f"a {_describe(frame.macro)} macro cannot look ahead (§4.3)")
+        result = look_ahead(self.run, kind)
+        frame.looked[kind] = result
+        return result
+
+    def found(self, kind: str, value: Callable[[], Any]) -> None:
+        """In a look-ahead for ``kind``: end it with the value."""
+        if self.looking == kind:
+            raise Found(value())
+
+
+_SWITCH = {
+    Kind.CYCLE: "CYCMAC",
+    Kind.MOTION: "MTNMAC",
+    Kind.LCS: "LCSMAC",
+    Kind.OPERATION_EVENT: "OEMAC",
+    Kind.REGISTER: "REGMAC",
+    Kind.TAPE: "TAPMAC",
+    Kind.DIAGNOSTIC: "DIAGMAC",
+}
+_NO_LOOKAHEAD = frozenset({Kind.DECLARATION, Kind.LCS, Kind.REGISTER, Kind.TAPE, Kind.DIAGNOSTIC})
+
+
+def _describe(macro: Macro) -> str:
+    if macro.kind is Kind.SYNTAX:
+        return "user-defined"
+    if macro.phase is Phase.EVENT:
+        return str(macro.kind.value)
+    return f"{macro.kind.value} {macro.phase.value}"

@@ -1,0 +1,495 @@
+"""Where the event macros fire in the post (spec 09 §5), each with its $P.
+
+The run installs these as its hooks only when a macro engine runs (a machine with macros):
+without macros the post's path is untouched. Each hook is a bound method of
+:class:`EventHooks`, or a module function that takes the run, so a snapshot of the run for a
+look-ahead carries hooks that act on the snapshot alone.
+
+=====================  ======================================================
+kind                   fires around
+=====================  ======================================================
+tool change (first)    TOOLNO, LOADTL, TURRET (§5.4-5.5)
+motion                 each FROM, GOTO, GODLTA; an arc's GOTO with $P1 = 1 (§5.7)
+cycle                  each hole of a canned cycle the control runs (§5.6)
+LCS                    TRANS, gecent's immediate LCS change (§5.8)
+break                  BREAK (§5.3)
+register               each register of a block (§5.10)
+tape                   each punched block (§5.11)
+diagnostic             each warning (§5.12)
+=====================  ======================================================
+"""
+
+from __future__ import annotations
+
+import re
+from typing import TYPE_CHECKING, Any
+
+from gecent.core.absent import ABSENT
+from gecent.core.cl.records import Motion, MotionSubtype, Statement, Word
+from gecent.core.cl.vocabulary import vocabulary
+from gecent.core.errors import Diagnostic, NotYetSupported
+from gecent.core.macros.context import Frame
+from gecent.core.macros.host import MacroHost
+from gecent.core.macros.lookahead import next_motion
+from gecent.core.macros.model import Kind, MacroError, Phase
+from gecent.core.macros.params import (
+    CycleParams,
+    DiagnosticParams,
+    LcsParams,
+    MotionParams,
+    NoParams,
+    RegisterParams,
+    TapeParams,
+    ToolChangeParams,
+)
+from gecent.core.output.block import TEXT_CODES, Block, Code
+from gecent.core.output.tape import tape_line
+
+if TYPE_CHECKING:
+    from gecent.core.macros.engine import MacroEngine
+    from gecent.core.output.element import OutputElement
+    from gecent.core.output.words import Word as RegisterWord
+
+_SUBCLASS = {MotionSubtype.FROM: 3.0, MotionSubtype.GODLTA: 5.0, MotionSubtype.GOTO: 5.0,
+             MotionSubtype.CONTINUATION: 6.0}  # fmt: skip
+_SEQUENCE = re.compile(r"(/?\s*N\d+)\s*(.*)\Z", re.DOTALL)
+LAST_REGISTER = 30
+
+
+class EventHooks:
+    def __init__(self, engine: MacroEngine) -> None:
+        self.engine = engine
+
+    def output_element(self, output: OutputElement) -> None:
+        """The tape and register macros sit in the output element's path."""
+        table = self.engine.table
+        if table.has(Kind.TAPE):
+            output.emit = self.tape
+        if table.has(Kind.REGISTER):
+            output.register_hook = self.register
+
+    def fast_path_allowed(self) -> bool:
+        """The fast path makes GOTO blocks itself: only when no macro would see them."""
+        table = self.engine.table
+        if any(table.has(kind) for kind in (Kind.MOTION, Kind.TAPE, Kind.REGISTER)):
+            return False
+        return not table.covers((5000, int(MotionSubtype.GOTO)))
+
+    @property
+    def run(self) -> MacroHost:
+        return self.engine.run
+
+    # -- motion (§5.7) -------------------------------------------------------------------
+
+    def motion(self, record: Motion) -> None:
+        engine = self.engine
+        run = self.run
+        engine.found("motion", lambda: next_motion(run, record))
+        if not engine.table.has(Kind.MOTION):
+            run.motion_builtin(record)
+            return
+        params = self._motion_params(record)
+        entry = params.subclass
+
+        def builtin() -> None:
+            if params.subclass != entry and entry == 1.0:
+                run.circle.centre = None  # the arc goes as a move to its end point
+            if 19 in params.changed:
+                raise NotYetSupported("a motion macro's changed helical component ($P19)")
+            run.motion_builtin(record)
+
+        engine.event(Kind.MOTION, params, record, builtin, proceed=_motion_goes)
+
+    def _motion_params(self, record: Motion) -> MotionParams:
+        run = self.run
+        position = run.state.position
+        translation = position.translation
+        last = record.points[-1]
+        if record.subtype is MotionSubtype.GODLTA:
+            delta = last if len(last) == 3 else (0.0, 0.0, last[0])
+            cl = tuple(position.previous_part[a] - translation[a] + delta[a] for a in range(3))
+        else:
+            cl = tuple(float(v) for v in last[:3])
+        machine = (*(cl[a] + translation[a] for a in range(3)), 0.0, 0.0, 0.0)
+        params = MotionParams()
+        circle = run._circle
+        arc = (
+            circle is not None
+            and circle.centre is not None
+            and record.subtype is MotionSubtype.GOTO
+        )
+        params.set(1, 1.0 if arc else _SUBCLASS[record.subtype])
+        params.set(2, (*cl, 0.0, 0.0, 1.0))
+        params.set(3, machine)
+        params.set(4, record.number)
+        params.set(5, record.number)
+        params.set(6, 0)
+        if arc and circle is not None:
+            centre = circle.exact_centre
+            start = position.previous_part
+            u, v = {0: (0, 1), 1: (2, 0), 2: (1, 2)}[circle.plane]
+            moved = tuple(centre[a] + translation[a] for a in range(3))
+            params.set(8, len(record.points))
+            params.set(9, 1.0 if circle.axis_sense < 0 else 2.0)
+            params.set(10, float(circle.plane + 1))
+            params.set(11, params[2])
+            params.set(12, machine)
+            params.set(13, centre)
+            params.set(14, moved)
+            params.set(18, ((start[u] - moved[u]) ** 2 + (start[v] - moved[v]) ** 2) ** 0.5)
+            params.set(19, 0.0)
+            params.set(23, 0.0)
+        return params
+
+    # -- cycle (§5.6) ---------------------------------------------------------------------
+
+    def cycle(
+        self,
+        record: Motion,
+        at: tuple[float, float, float],
+        hole: tuple[float, float, float],
+        first_z: float,
+    ) -> None:
+        """A hole of a canned cycle the control runs: the cycle macros around its block.
+        $P1 left 0 skips the hole; -1 makes it by moves (no shutdown macro then); $P11,
+        $P13 and $P15 changed move the R plane, the bottom and the return level."""
+        run = self.run
+        cycle = run.cycle
+        control = run.control_cycles
+        assert cycle is not None and control is not None
+        translation = run.state.position.translation
+        plane, bottom, back = control.levels(cycle, hole, first_z)
+        params = CycleParams()
+        values: tuple[tuple[int, Any], ...] = (
+            (1, 1.0), (2, hole), (3, (*(hole[a] + translation[a] for a in range(3)), 0.0, 0.0,
+            0.0)), (4, CYCLE_TYPES.get(cycle.kind, 1.0)), (5, not control.active), (6, 0),
+            (8, True), (9, run.state.feed.ipm), (10, True), (11, plane), (12, True),
+            (13, bottom), (14, True), (15, back), (16, 1 if cycle.step else 0),
+            (17, (cycle.step,) if cycle.step else ()), (18, 0), (19, 3.0), (20, False),
+        )  # fmt: skip
+        for number, value in values:
+            params.set(number, value)
+
+        def builtin() -> None:
+            changed = params.changed & set(CYCLE_SWITCHES)
+            if changed:
+                what = ", ".join(f"$P{n} ({CYCLE_SWITCHES[n]})" for n in sorted(changed))
+                raise NotYetSupported(f"a cycle macro's changed {what}", record.where)
+            control_value = params.control
+            if control_value == -2:
+                raise NotYetSupported("a cycle macro's $P1 = -2 (the feed alone)", record.where)
+            if control_value == -1:
+                run.simulated_hole(record, at, hole)
+                return
+            levels = (float(params.clearance), float(params.depth), float(params.retract))
+            moved = params.changed & {11, 13, 15}
+            control.hole(cycle, record.number, hole, first_z, levels if moved else None)
+
+        self.engine.event(
+            Kind.CYCLE, params, record, builtin, proceed=_cycle_goes, then=_cycle_output
+        )
+
+    # -- diagnostic, tape, register (§5.10-§5.12) ----------------------------------------
+
+    def diagnostic(self, diagnostic: Diagnostic) -> None:
+        """§5.12: the macro may drop, change or add diagnostics before they count."""
+        engine = self.engine
+        run = self.run
+        count = engine._occurrences.get(diagnostic.text, 0) + 1
+        engine._occurrences[diagnostic.text] = count
+        params = DiagnosticParams()
+        for number, value in ((1, 1.0), (2, None), (3, 1.0), (4, count), (5, diagnostic.text)):
+            params.set(number, value)
+
+        def emit(frame: Frame) -> None:
+            params.changed.clear()
+            run.warn_builtin(Diagnostic(str(params.message), diagnostic.where))
+
+        frame = engine.single(Kind.DIAGNOSTIC, params, run.current_record, emit)
+        if frame is None:
+            run.warn_builtin(diagnostic)
+            return
+        if params.flag != 0 and (frame.outputs == 0 or params.changed):
+            run.warn_builtin(Diagnostic(str(params.message), diagnostic.where))
+
+    def tape(self, block: Block) -> None:
+        """§5.11: each punched block goes through the tape macro before tape and listing."""
+        engine = self.engine
+        run = self.run
+        line = tape_line(block)
+        if line is None:
+            run.sinks.emit(block)
+            return
+        params = TapeParams()
+        _tape_block(params, line, 1.0)
+
+        def emit(frame: Frame) -> None:
+            text = str(params.block)
+            if text:
+                run.sinks.emit(_extra_block(block, text))
+            _tape_block(params, "", params.flag)
+
+        while True:
+            frame = engine.single(Kind.TAPE, params, run.current_record, emit)
+            if frame is None:
+                run.sinks.emit(block)
+                return
+            flag = params.flag
+            if flag == 0:
+                return
+            text = str(params.block)
+            if flag == 1:
+                if text == line:
+                    run.sinks.emit(block)
+                elif text:
+                    _retext(block, text)
+                    run.sinks.emit(block)
+                return
+            if text:  # restart mode: out it goes, and the macro begins again
+                run.sinks.emit(_extra_block(block, text))
+            _tape_block(params, "", flag)
+
+    def register(self, block: Block, words: list[RegisterWord]) -> list[RegisterWord]:
+        """§5.10: each register of a block, before it is placed in the block."""
+        engine = self.engine
+        matching = engine.sv.get("REGMATCH")
+        placed: list[tuple[float, int, RegisterWord]] = []
+        order = 0
+        for word in words:
+            location, letter, _printed, punched = word
+            text = letter + punched
+            if matching and not _register_matches(matching, location, text, block.code):
+                placed.append((location, order, word))
+                order += 1
+                continue
+            params = RegisterParams()
+            value = block.cells[location]
+            for number, item in ((1, 1.0), (2, text), (3, location),
+                                 (4, None if value is ABSENT else float(value)),
+                                 (5, block.code)):  # fmt: skip
+                params.set(number, item)
+
+            def put(frame: Frame, params: RegisterParams = params) -> None:
+                nonlocal order
+                params.changed.clear()
+                placed.append((_slot(params.index), order, _word(params)))
+                order += 1
+
+            frame = engine.single(Kind.REGISTER, params, self.run.current_record, put)
+            if frame is None:
+                placed.append((location, order, word))
+            elif params.flag != 0 and (frame.outputs == 0 or params.changed):
+                placed.append((_slot(params.index), order, _word(params)))
+            order += 1
+        placed.sort(key=lambda item: (item[0], item[1]))
+        return [word for _, _, word in placed]
+
+
+def _cycle_goes(params: Any) -> bool:
+    return bool(params.control != 0)
+
+
+def _cycle_output(params: Any) -> bool:
+    """The cycle shutdown macro follows a cycle block, not holes made by moves (§5.6)."""
+    return bool(params.control in (1, 2))
+
+
+def _motion_goes(params: Any) -> bool:
+    subclass = params.subclass
+    if subclass in (9.0, 10.0):
+        raise MacroError("a motion's $P1 cannot become a spline (9) or a pattern (10)")
+    return bool(subclass != 0)
+
+
+def _tape_block(params: TapeParams, line: str, flag: float) -> None:
+    params.set(1, flag)
+    params.set(2, 1.0)
+    params.set(3, line)
+    found = _SEQUENCE.match(line)
+    params.set(4, found.group(1) if found else "")
+    params.set(5, found.group(2) if found else line)
+    params.changed.clear()
+
+
+def _extra_block(like: Block, text: str) -> Block:
+    """A block a tape macro adds: punched as written, blanks kept."""
+    block = Block(Code.INSERT, like.record, text=text)
+    block.keep_blanks = True
+    return block
+
+
+def _retext(block: Block, text: str) -> None:
+    if block.code in TEXT_CODES:
+        block.text = text
+        block.keep_blanks = True
+    else:
+        block.punch = text
+
+
+def _register_matches(matching: tuple[Any, ...], location: int, text: str, code: Code) -> bool:
+    for item in matching:
+        if isinstance(item, Code):
+            if item is code:
+                return True
+        elif isinstance(item, str):
+            if re.match(item, text):
+                return True
+        elif item == location:
+            return True
+    return False
+
+
+def _slot(index: Any) -> float:
+    number = float(index)
+    if number < 1:
+        return -1.0  # prefixed to the block
+    if number > LAST_REGISTER:
+        return LAST_REGISTER + 1.0  # appended
+    return number
+
+
+def _word(params: RegisterParams) -> RegisterWord:
+    text = str(params.text)
+    return (int(_slot(params.index)), "", text, text)
+
+
+# -- statement handlers (module functions: the run is their argument) --------------------
+
+
+def tool_change(run: MacroHost, statement: Statement) -> None:
+    """TOOLNO, LOADTL and TURRET with the tool change macros around them (§5.4-5.5); the
+    first tool change takes the first-tool-change macros when there are any ($FT = 0)."""
+    engine = run.macros
+    assert engine is not None
+    params = _tool_params(statement)
+    engine.found("tool", lambda: params.tool_id)
+    table = engine.table
+    first = engine.sv.get("FT") == 0 and (
+        table.event(Kind.FIRST_TOOL_CHANGE, Phase.STARTUP) is not None
+        or table.event(Kind.FIRST_TOOL_CHANGE, Phase.SHUTDOWN) is not None
+    )
+    kind = Kind.FIRST_TOOL_CHANGE if first else Kind.TOOL_CHANGE
+    original = run.builtin_statement(statement.major)
+
+    def builtin() -> None:
+        original(run, _tool_statement(statement, params))
+
+    engine.event(kind, params, statement, builtin)
+    engine.sv["FT"] = 1
+
+
+def _tool_params(statement: Statement) -> ToolChangeParams:
+    args = statement.args
+    numbers = [float(a) for a in args if not isinstance(a, Word)]
+    words = statement.words()
+    params = ToolChangeParams()
+    tool = numbers[0] if numbers else None
+    pocket = tool
+    if statement.major == "TURRET" and len(args) > 1 and not isinstance(args[1], Word):
+        pocket = float(args[1])
+    params.set(1, pocket)
+    params.set(2, 2.0 if "NEXT" in words else 1.0)
+    params.set(3, 2.0)
+    params.set(4, 1.0 if "CLW" in words else 2.0 if "CCLW" in words else None)
+    params.set(5, _after(args, "OFSETL"))
+    params.set(6, _after(args, "LENGTH"))
+    params.set(9, tool)
+    params.set(18, 2.0 if "REAR" in words else 1.0 if "FRONT" in words else None)
+    return params
+
+
+def _after(args: tuple[Any, ...], name: str) -> float | None:
+    for index, arg in enumerate(args[:-1]):
+        if isinstance(arg, Word) and arg.name == name and not isinstance(args[index + 1], Word):
+            return float(args[index + 1])
+    return None
+
+
+def _tool_statement(statement: Statement, params: ToolChangeParams) -> Statement:
+    """The statement with what the startup macro changed: the tool ($P9, or $P1 when it
+    alone changed), the offset ($P5), the length ($P6) and the turn ($P4)."""
+    changed = params.changed
+    if not changed & {1, 4, 5, 6, 9}:
+        return statement
+    if changed - {1, 4, 5, 6, 9}:
+        numbers = ", ".join(f"$P{n}" for n in sorted(changed - {1, 4, 5, 6, 9}))
+        raise NotYetSupported(f"a tool change macro's changed {numbers}", statement.where)
+    args = list(statement.args)
+    tool = params.tool_id if 9 in changed or 1 not in changed else params.pocket
+    if statement.major == "TURRET" and 1 in changed and 9 in changed:
+        args[1:2] = [float(params.pocket)]
+    args[0] = float(tool)
+    for number, name in ((5, "OFSETL"), (6, "LENGTH")):
+        if number in changed:
+            args = _set_after(args, name, params[number])
+    if 4 in changed:
+        args = [a for a in args if not (isinstance(a, Word) and a.name in ("CLW", "CCLW"))]
+        if params.drum in (1, 3):
+            args.append(_word_of("CLW"))
+        elif params.drum in (2, 4):
+            args.append(_word_of("CCLW"))
+    return Statement(statement.file, statement.line, statement.number, statement.major,
+                     statement.code, tuple(args), statement.text)  # fmt: skip
+
+
+def _word_of(name: str) -> Word:
+    return Word(name, vocabulary().minor_code(name))
+
+
+def _set_after(args: list[Any], name: str, value: Any) -> list[Any]:
+    for index, arg in enumerate(args[:-1]):
+        if isinstance(arg, Word) and arg.name == name:
+            if value is None:
+                return args[:index] + args[index + 2 :]
+            return [*args[: index + 1], float(value), *args[index + 2 :]]
+    if value is None:
+        return args
+    return [*args, _word_of(name), float(value)]
+
+
+def trans(run: MacroHost, statement: Statement) -> None:
+    """TRANS with the LCS macros around it (§5.8): gecent's immediate LCS change."""
+    engine = run.macros
+    assert engine is not None
+    original = run.builtin_statement("TRANS")
+    numbers = statement.numbers()
+    translation = tuple((*(run.units.length(v) for v in numbers), 0.0, 0.0, 0.0)[:3])
+    params = LcsParams()
+    for number, value in ((1, 1.0), (2, 10.0 if any(translation) else 0.0), (3, 0.0),
+                          (4, (1.0, 0.0, 0.0, translation[0], 0.0, 1.0, 0.0, translation[1],
+                               0.0, 0.0, 1.0, translation[2])),
+                          (5, 0.0), (9, translation), (21, 0.0)):  # fmt: skip
+        params.set(number, value)
+    engine.event(Kind.LCS, params, statement, lambda: original(run, statement))
+
+
+def break_(run: MacroHost, statement: Statement) -> None:
+    """BREAK: the break shutdown macro wraps up the old segment, the startup one begins the
+    next (§5.3: shutdown first)."""
+    engine = run.macros
+    assert engine is not None
+    original = run.builtin_statement("BREAK")
+    shutdown = engine.table.event(Kind.BREAK, Phase.SHUTDOWN)
+    startup = engine.table.event(Kind.BREAK, Phase.STARTUP)
+    if shutdown is not None:
+        engine.run_event(shutdown, NoParams(), statement)
+    original(run, statement)
+    if startup is not None:
+        engine.run_event(startup, NoParams(), statement)
+
+
+STATEMENT_HOOKS = {
+    "TOOLNO": tool_change,
+    "LOADTL": tool_change,
+    "TURRET": tool_change,
+    "TRANS": trans,
+    "BREAK": break_,
+}
+
+
+# the cycle types of $P4 (§5.6) for gecent's cycle words
+CYCLE_TYPES = {"DRILL": 1.0, "FACE": 2.0, "TAP": 3.0, "BORE": 5.0, "DEEP": 11.0, "THRU": 13.0,
+               "MILL": 1.0}  # fmt: skip
+# the output switches of §5.6 whose effect is not built (a change stops the run, named)
+CYCLE_SWITCHES = {8: "feed", 10: "clearance plane", 12: "depth", 14: "retract plane",
+                  20: "back-bore plane", 21: "back-bore plane"}  # fmt: skip
