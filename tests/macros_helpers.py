@@ -21,7 +21,10 @@ def record(text: str) -> Record:
 
 
 def post(
-    text: str, macros: Macros | list[Macro] | None, machine: str = "linuxcnc-mill", fast: bool = True
+    text: str,
+    macros: Macros | list[Macro] | None,
+    machine: str = "linuxcnc-mill",
+    fast: bool = True,
 ) -> tuple[str, RunResult]:
     """The tape image and the result of posting ``text`` with the macros."""
     listed = [] if macros is None else macros.macros if isinstance(macros, Macros) else macros

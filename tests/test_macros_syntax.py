@@ -372,5 +372,7 @@ def test_read_only_and_unknown_p_are_refused() -> None:
     def diag(ctx):  # type: ignore[no-untyped-def]
         ctx.p[4] = 2  # the occurrence count is read-only
 
-    with pytest.raises(InputError, match=r"\$P4 \(occurrence\) of the diagnostic macro is read-only"):
+    with pytest.raises(
+        InputError, match=r"\$P4 \(occurrence\) of the diagnostic macro is read-only"
+    ):
         post(HEAD + "PENUP\nFINI\n", macros)

@@ -33,6 +33,7 @@ from gecent.core.macros.model import (
     Kind,
     Macro,
     MacroError,
+    MacroFailure,
     Phase,
     TerminateMacro,
 )
@@ -45,11 +46,6 @@ if TYPE_CHECKING:
 
 Action = Callable[[], None]
 MAX_DEPTH = 200  # nested activations: a macro that keeps issuing what matches another
-
-
-class MacroFailure(InputError):
-    """A macro stopped the run: its own exception, or a rule of its kind it broke. The
-    message names the macro; the position is the record it was working on."""
 
 
 class MacroEngine:
@@ -133,7 +129,7 @@ class MacroEngine:
 
     def output(self, frame: Frame) -> None:
         if frame.macro.slot not in OUTPUT_ALLOWED or frame.on_output is None:
-            raise MacroError(f"OUTPUT is not allowed in a {_describe(frame.macro)} macro (§3)")
+            raise MacroError(f"OUTPUT is not allowed in the {_describe(frame.macro)} macro (§3)")
         frame.outputs += 1
         frame.on_output(frame)
 
@@ -169,7 +165,7 @@ class MacroEngine:
 
     def _commands_allowed(self, frame: Frame) -> None:
         if frame.macro.kind in NO_COMMANDS:
-            raise MacroError(f"a {_describe(frame.macro)} macro issues no commands (§4.3)")
+            raise MacroError(f"the {_describe(frame.macro)} macro issues no commands (§4.3)")
 
     def warn(self, frame: Frame, text: str) -> None:
         record = frame.record or self.run.current_record
@@ -231,14 +227,19 @@ class MacroEngine:
             self._running.discard(kind)
 
     def single(
-        self, kind: Kind, params: PParams, record: Record | None, on_output: Callable[[Frame], None]
+        self,
+        kind: Kind,
+        params: PParams,
+        record: Record | None,
+        on_output: Callable[[Frame], None],
+        local: dict[str, Any] | None = None,
     ) -> Frame | None:
         """A single event macro (register, tape, diagnostic, ...): its frame after it ran,
         or None when none is installed, enabled and not already running."""
         macro = self.table.event(kind, Phase.EVENT)
         if macro is None or kind in self._running or not self.enabled(kind):
             return None
-        frame = Frame(macro, params, record, {}, on_output=on_output)
+        frame = Frame(macro, params, record, {} if local is None else local, on_output)
         self._running.add(kind)
         try:
             self._run(frame)
@@ -286,7 +287,7 @@ class MacroEngine:
         if self.looking is not None:
             return None
         if frame.macro.kind in _NO_LOOKAHEAD:
-            raise MacroError(f"a {_describe(frame.macro)} macro cannot look ahead (§4.3)")
+            raise MacroError(f"the {_describe(frame.macro)} macro cannot look ahead (§4.3)")
         result = look_ahead(self.run, kind)
         frame.looked[kind] = result
         return result

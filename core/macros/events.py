@@ -31,7 +31,7 @@ from gecent.core.errors import Diagnostic, NotYetSupported
 from gecent.core.macros.context import Frame
 from gecent.core.macros.host import MacroHost
 from gecent.core.macros.lookahead import next_motion
-from gecent.core.macros.model import Kind, MacroError, Phase
+from gecent.core.macros.model import Kind, MacroError, MacroFailure, Phase
 from gecent.core.macros.params import (
     CycleParams,
     DiagnosticParams,
@@ -54,6 +54,7 @@ _SUBCLASS = {MotionSubtype.FROM: 3.0, MotionSubtype.GODLTA: 5.0, MotionSubtype.G
              MotionSubtype.CONTINUATION: 6.0}  # fmt: skip
 _SEQUENCE = re.compile(r"(/?\s*N\d+)\s*(.*)\Z", re.DOTALL)
 LAST_REGISTER = 30
+TAPE_RESTARTS = 10_000  # a tape macro left in restart mode would loop for ever (§5.11)
 
 
 class EventHooks:
@@ -229,8 +230,9 @@ class EventHooks:
                 run.sinks.emit(_extra_block(block, text))
             _tape_block(params, "", params.flag)
 
-        while True:
-            frame = engine.single(Kind.TAPE, params, run.current_record, emit)
+        local: dict[str, Any] = {}  # kept across restarts (§5.11)
+        for _ in range(TAPE_RESTARTS):
+            frame = engine.single(Kind.TAPE, params, run.current_record, emit, local)
             if frame is None:
                 run.sinks.emit(block)
                 return
@@ -248,16 +250,22 @@ class EventHooks:
             if text:  # restart mode: out it goes, and the macro begins again
                 run.sinks.emit(_extra_block(block, text))
             _tape_block(params, "", flag)
+        macro = engine.table.event(Kind.TAPE, Phase.EVENT)
+        raise MacroFailure(
+            f"macro {macro.key if macro else 'tape'}: restarted {TAPE_RESTARTS} times "
+            "($P1 never set back to 0 or 1, §5.11)",
+            run.current_record.where if run.current_record is not None else None,
+        )
 
     def register(self, block: Block, words: list[RegisterWord]) -> list[RegisterWord]:
         """§5.10: each register of a block, before it is placed in the block."""
         engine = self.engine
-        matching = engine.sv.get("REGMATCH")
         placed: list[tuple[float, int, RegisterWord]] = []
         order = 0
         for word in words:
             location, letter, _printed, punched = word
             text = letter + punched
+            matching = engine.sv.get("REGMATCH")  # the macro may set it as it goes
             if matching and not _register_matches(matching, location, text, block.code):
                 placed.append((location, order, word))
                 order += 1
@@ -373,9 +381,9 @@ def tool_change(run: MacroHost, statement: Statement) -> None:
 
     def builtin() -> None:
         original(run, _tool_statement(statement, params))
+        engine.sv["FT"] = 1  # a tool is in: the shutdown macro may set it to 0 again
 
     engine.event(kind, params, statement, builtin)
-    engine.sv["FT"] = 1
 
 
 def _tool_params(statement: Statement) -> ToolChangeParams:

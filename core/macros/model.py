@@ -13,6 +13,7 @@ from dataclasses import dataclass, field
 from enum import Enum
 from typing import Any
 
+from gecent.core.errors import InputError
 from gecent.core.macros.sdl import Sdl, parse_sdl
 
 
@@ -61,6 +62,11 @@ Body = Callable[[Any], Any]  # takes the MacroContext (core/macros/context.py)
 class MacroError(Exception):
     """A macro did what its kind does not allow (OUTPUT in a tool change macro, a command
     in a tape macro, a read-only $P written, ...); the run stops naming the macro."""
+
+
+class MacroFailure(InputError):
+    """A macro stopped the run: its own exception, or a rule of its kind it broke. The
+    message names the macro; the position is the record it was working on."""
 
 
 class TerminateMacro(Exception):

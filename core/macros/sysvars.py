@@ -75,6 +75,8 @@ class SystemVariables:
         return re.sub(r"^\$", "", name).upper()
 
     def __getattr__(self, name: str) -> Any:
+        if name.startswith("_"):
+            raise AttributeError(name)
         return self[name]
 
     def __setattr__(self, name: str, value: Any) -> None:
