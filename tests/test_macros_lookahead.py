@@ -109,7 +109,7 @@ def test_a_look_ahead_inside_a_look_ahead_is_none() -> None:
 
     @macros.event(Kind.TOOL_CHANGE, Phase.STARTUP)
     def before(ctx):  # type: ignore[no-untyped-def]
-        ctx.next.tool
+        _ = ctx.next.tool
 
     @macros.syntax("SPINDL/$P1")
     def speed(ctx):  # type: ignore[no-untyped-def]
