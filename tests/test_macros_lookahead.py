@@ -8,9 +8,7 @@ from gecent.core.macros import Kind, Macros, Phase
 from .macros_helpers import post, warnings
 
 HEAD = "PARTNO T\nUNITS/MM\nFROM/0,0,10\nFEDRAT/100\n"
-THREE_TOOLS = HEAD + (
-    "LOADTL/1\nGOTO/1,0,0\nLOADTL/2\nGOTO/2,0,0\nLOADTL/3\nGOTO/3,0,0\nFINI\n"
-)
+THREE_TOOLS = HEAD + ("LOADTL/1\nGOTO/1,0,0\nLOADTL/2\nGOTO/2,0,0\nLOADTL/3\nGOTO/3,0,0\nFINI\n")
 
 
 def staged_tools() -> tuple[Macros, list[object]]:

@@ -49,7 +49,12 @@ def test_acme_pack_in_a_fresh_virtual_environment(tmp_path: Path) -> None:
     )
     data = json.loads(listed.stdout)
     acme = {(r["family"], r["id"]): r for r in data["plugins"] if r["distribution"] == "acme-mill"}
-    assert set(acme) == {("machines", "acme-vmc1"), ("macfuns", "acme-vmc1")}
+    assert set(acme) == {
+        ("machines", "acme-vmc1"),
+        ("macfuns", "acme-vmc1"),
+        ("macros", "acme-vmc1:tool_change"),
+        ("macros", "acme-vmc1:stage_next_tool"),
+    }
     assert acme[("machines", "acme-vmc1")]["module"] == "acme_mill.machine"
     assert data["failures"] == []
     machines = subprocess.run(
@@ -70,3 +75,16 @@ def test_acme_pack_in_a_fresh_virtual_environment(tmp_path: Path) -> None:
         cwd=tmp_path,
     )
     assert "ACME VMC-1 MILL" in shown.stdout
+    program = tmp_path / "two_tools.apt"
+    program.write_text(
+        "PARTNO ACME\nFROM/0,0,10\nLOADTL/1\nSPINDL/1350,CLW\nFEDRAT/10\nGOTO/1,0,0\n"
+        "LOADTL/2\nSPINDL/900,CLW\nGOTO/2,0,0\nFINI\n"
+    )
+    subprocess.run(
+        [*gecent, "post", str(program), "--machine", "acme-vmc1", "-o", str(tmp_path / "t.tape")],
+        check=True,
+        env=environment,
+        cwd=tmp_path,
+    )
+    tape = (tmp_path / "t.tape").read_text().splitlines()
+    assert tape.count("G53Z0") == 2 and tape.count("T2") == 1  # the pack's macros ran

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 from dataclasses import dataclass, field, replace
+from typing import Any
 
 from gecent.core.absent import ABSENT, Absent
 from gecent.core.machine.catalogue import STORE_SIZE, catalogue
@@ -55,6 +56,8 @@ class MachineDefinition:
     warnings: tuple[str, ...] = field(default=())
     # the positioning feed table (FRTAB rows 0.., option 62 ranges x option 63 feeds)
     feed_table: tuple[float, ...] = field(default=())
+    # macros written in the machine file (core/macros/templates.py): Macro objects
+    macros: tuple[Any, ...] = field(default=())
 
     @property
     def registers(self) -> RegisterSet:

@@ -29,6 +29,8 @@ from gecent.core.machine.definition import MachineDefinition, OptionValue, Regis
 from gecent.core.machine.regformat import RegisterFormat, decode_regfor
 from gecent.core.machine.rules import check_definition
 from gecent.core.machine.schema import HeadSection, MachineFile
+from gecent.core.macros.model import Macro
+from gecent.core.macros.templates import template_macro
 from pydantic import ValidationError
 
 _UNION_TAGS = frozenset({"int", "str", "float"})
@@ -300,6 +302,7 @@ def build_definition(
         feed_ranges=feed_ranges,
         output_order=order,
         feed_table=feed_table,
+        macros=(*(base.macros if base else ()), *_macros(file, problems)),
     )
     problems.raise_if_any()
     errors, warnings = check_definition(definition)
@@ -307,6 +310,31 @@ def build_definition(
         problems.add(table, entry, rule)
     problems.raise_if_any()
     return _with_warnings(definition, warnings)
+
+
+def _macros(file: MachineFile, problems: _Problems) -> list[Macro]:
+    made: list[Macro] = []
+    names: set[str] = set()
+    for section in file.macros:
+        if section.name in names:
+            problems.add("macros", section.name, "a second macro of this name")
+            continue
+        names.add(section.name)
+        try:
+            made.append(
+                template_macro(
+                    section.name,
+                    file.machine.name,
+                    section.body,
+                    section.sdl,
+                    section.event,
+                    section.phase,
+                    section.description,
+                )
+            )
+        except ValueError as error:
+            problems.add("macros", section.name, str(error))
+    return made
 
 
 def _head(

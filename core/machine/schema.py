@@ -71,6 +71,17 @@ class HeadSection(_Section):
     regfor: dict[int, float] = Field(default_factory=dict)
 
 
+class MacroSection(_Section):
+    """A macro written in the machine file (core/macros/templates.py, docs/macros.md)."""
+
+    name: str = Field(min_length=1, max_length=60)
+    sdl: str | None = None
+    event: str | None = None
+    phase: str | None = None
+    body: list[str] = Field(default_factory=list)
+    description: str = ""
+
+
 class MachineFile(_Section):
     machine: MachineHeader
     tableg: dict[int, int | str] = Field(default_factory=dict)
@@ -83,3 +94,4 @@ class MachineFile(_Section):
     feed_table: FeedTableSection | None = None
     output_order: OutputOrderSection | None = None
     heads: dict[int, HeadSection] = Field(default_factory=dict)
+    macros: list[MacroSection] = Field(default_factory=list)

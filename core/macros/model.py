@@ -115,6 +115,9 @@ class Macro:
             wanted = "no phase" if single else "a startup or shutdown phase"
             raise ValueError(f"{self.kind.value} macro {self.name!r} takes {wanted}")
 
+    def __deepcopy__(self, memo: dict[int, Any]) -> Macro:
+        return self  # immutable: a run's snapshot shares it
+
     @property
     def key(self) -> str:
         """The id ``--list-plugins`` shows: machine and name."""

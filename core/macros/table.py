@@ -121,7 +121,7 @@ class MacroTable:
             else:
                 layer = USER
             placed.append(Placed(macro, layer, order, info.distribution))
-        for order, macro in enumerate(extra or (), start=len(placed)):
+        for order, macro in enumerate((*machine.macros, *(extra or ())), start=len(placed)):
             placed.append(Placed(macro, MACHINE_PACK, order, machine.origin))
         if not placed:
             return None
