@@ -32,6 +32,8 @@ from gecent.core.errors import (
 )
 from gecent.core.families import FAMILIES, MachinePack
 from gecent.core.machine.definition import MachineDefinition
+from gecent.core.macros.files import load_macro_file
+from gecent.core.macros.table import with_macros
 from gecent.core.motion.guard import DEFAULT_MAX_SEGMENTS
 from gecent.core.output.files import write_atomically
 from gecent.core.output.modern import modern_output
@@ -246,6 +248,14 @@ def machine_show(key: str, show_all: bool, as_json: bool) -> None:
     help="Most segment blocks one CL move may make (0: no bound); a longer move is refused.",
 )
 @click.option(
+    "--macros",
+    "macro_files",
+    multiple=True,
+    type=click.Path(dir_okay=False),
+    metavar="FILE",
+    help="Also use the macros of this Python file (docs/macros.md); may be repeated.",
+)
+@click.option(
     "--no-fast-path",
     "general_path",
     is_flag=True,
@@ -260,6 +270,7 @@ def post(
     punch_to: tuple[str, str] | None,
     as_json: bool,
     max_segments: int,
+    macro_files: tuple[str, ...],
     general_path: bool,
 ) -> None:
     """Postprocess a CL file into a tape image and a printed listing.
@@ -270,6 +281,8 @@ def post(
     input's folder unless named there. INPUT - reads the CL file from standard input."""
     _terminate_cleanly()
     plugins = _plugins()
+    for macro_file in macro_files:
+        plugins = with_macros(plugins, load_macro_file(macro_file), f"file {macro_file}")
     override = _override(plugins, machine_key)
     stem = "stdin" if input_path == "-" else Path(input_path).stem
     tape_target = Path(tape_path) if tape_path else Path(stem + ".tape")
