@@ -83,7 +83,7 @@ def _cli(*args: str):  # type: ignore[no-untyped-def]
 
 def test_gecent_post_takes_a_macro_file(tmp_path: Path) -> None:
     """The first example as a file of its own, tried with ``gecent post --macros``."""
-    kind, machine, source, given, expected = examples()[0]
+    _, machine, source, given, expected = examples()[0]
     (tmp_path / "shop.py").write_text(source)
     (tmp_path / "probe.apt").write_text(given)
     tape = tmp_path / "probe.tape"

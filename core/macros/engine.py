@@ -23,6 +23,7 @@ from gecent.core.cl.apt_source import TEXT_MAJORS, AptSourceReader
 from gecent.core.cl.records import Record, Statement
 from gecent.core.cl.vocabulary import vocabulary
 from gecent.core.errors import Diagnostic, GecentError, InputError
+from gecent.core.families import HookPoint
 from gecent.core.macros.context import Frame, LookaheadFlags, MacroContext
 from gecent.core.macros.host import MacroHost
 from gecent.core.macros.lookahead import look_ahead
@@ -61,6 +62,7 @@ class MacroEngine:
         self._running: set[Kind] = set()  # event kinds in progress: no re-entry (§4.2 rule 3)
         self._occurrences: dict[str, int] = {}
         self.hooks: Any = None  # the EventHooks install_macros puts in
+        self.macfun_data: dict[str, Any] = {}  # what MACFUN handlers keep for the run
 
     # -- user-defined macros -------------------------------------------------------------
 
@@ -258,7 +260,9 @@ class MacroEngine:
             self._running.discard(macro.kind)
 
     def start(self) -> None:
-        """The declaration macro, then machine startup (§5.1, §5.2)."""
+        """MACFUN's initialization call (MCHCON 0), the declaration macro, then machine
+        startup (§5.1, §5.2)."""
+        self.hooks.macfun(HookPoint.INIT)
         declaration = self.table.event(Kind.DECLARATION, Phase.EVENT)
         if declaration is not None:
             self._run(Frame(declaration, NoParams(), None, {}))

@@ -28,9 +28,11 @@ from gecent.core.absent import ABSENT
 from gecent.core.cl.records import Motion, MotionSubtype, Statement, Word
 from gecent.core.cl.vocabulary import vocabulary
 from gecent.core.errors import Diagnostic, NotYetSupported
+from gecent.core.families import HookPoint
 from gecent.core.macros.context import Frame
 from gecent.core.macros.host import MacroHost
 from gecent.core.macros.lookahead import next_motion
+from gecent.core.macros.macfun import MacfunContext, handled
 from gecent.core.macros.model import Kind, MacroError, MacroFailure, Phase
 from gecent.core.macros.params import (
     CycleParams,
@@ -68,6 +70,27 @@ class EventHooks:
             output.emit = self.tape
         if table.has(Kind.REGISTER):
             output.register_hook = self.register
+        if HookPoint.SLIDE_LIMITS in table.macfuns:
+            output.slide_limits.hook = self.slide_limits
+
+    def macfun(self, hook: HookPoint, **fields: Any) -> bool:
+        """The machine's MACFUN at a hook point: True when it did the special sequence
+        (RETURN = 1), so the caller skips the rest."""
+        handler = self.engine.table.macfuns.get(hook)
+        if handler is None:
+            return False
+        run = self.run
+        fields.setdefault("record", run.current_record)
+        fields.setdefault("data", self.engine.macfun_data)
+        return handled(handler(MacfunContext(hook, run, **fields)))
+
+    def slide_limits(self, position: tuple[int, ...]) -> bool:
+        """MCHCON 2: the machine tests its slide limits itself (TSTLIM's MACSRT call)."""
+        step = self.run.machine.number_option(14)
+        machine_point = tuple(p * step for p in position)
+        return self.macfun(
+            HookPoint.SLIDE_LIMITS, position=tuple(position), machine_point=machine_point
+        )
 
     def fast_path_allowed(self) -> bool:
         """The fast path makes GOTO blocks itself: only when no macro would see them."""
@@ -87,7 +110,7 @@ class EventHooks:
         run = self.run
         engine.found("motion", lambda: next_motion(run, record))
         if not engine.table.has(Kind.MOTION):
-            run.motion_builtin(record)
+            self._motion_builtin(record)
             return
         params = self._motion_params(record)
         entry = params.subclass
@@ -97,9 +120,28 @@ class EventHooks:
                 run.circle.centre = None  # the arc goes as a move to its end point
             if 19 in params.changed:
                 raise NotYetSupported("a motion macro's changed helical component ($P19)")
-            run.motion_builtin(record)
+            self._motion_builtin(record)
 
         engine.event(Kind.MOTION, params, record, builtin, proceed=_motion_goes)
+
+    def _motion_builtin(self, record: Motion) -> None:
+        """The post's motion, after the MACFUN FROM test (MCHCON 8) or thread sequence
+        (MCHCON 12) where the machine has them."""
+        run = self.run
+        macfuns = self.engine.table.macfuns
+        if macfuns:
+            hook = None
+            if record.subtype is MotionSubtype.FROM:
+                hook = HookPoint.FROM
+            elif run.state.threading.armed:
+                hook = HookPoint.THREAD
+            if hook is not None and hook in macfuns:
+                cl = tuple(float(v) for v in record.points[-1][:3])
+                translation = run.state.position.translation
+                machine_point = tuple(cl[a] + translation[a] for a in range(3))
+                if self.macfun(hook, record=record, point=cl, machine_point=machine_point):
+                    return
+        run.motion_builtin(record)
 
     def _motion_params(self, record: Motion) -> MotionParams:
         run = self.run
@@ -380,7 +422,13 @@ def tool_change(run: MacroHost, statement: Statement) -> None:
     original = run.builtin_statement(statement.major)
 
     def builtin() -> None:
-        original(run, _tool_statement(statement, params))
+        changed = _tool_statement(statement, params)
+        fields = {"record": changed, "values": changed.numbers(), "words": changed.words()}
+        hooks = engine.hooks
+        if not hooks.macfun(HookPoint.TOOLNO, **fields) and not hooks.macfun(
+            HookPoint.LOAD, **fields
+        ):
+            original(run, changed)
         engine.sv["FT"] = 1  # a tool is in: the shutdown macro may set it to 0 again
 
     engine.event(kind, params, statement, builtin)
@@ -486,7 +534,18 @@ def break_(run: MacroHost, statement: Statement) -> None:
         engine.run_event(startup, NoParams(), statement)
 
 
+def cycle_statement(run: MacroHost, statement: Statement) -> None:
+    """CYCLE: the machine's MACFUN cycle sequence first (MCHCON 7)."""
+    engine = run.macros
+    if engine.hooks.macfun(
+        HookPoint.CYCLE, record=statement, values=statement.numbers(), words=statement.words()
+    ):
+        return
+    run.builtin_statement("CYCLE")(run, statement)
+
+
 STATEMENT_HOOKS = {
+    "CYCLE": cycle_statement,
     "TOOLNO": tool_change,
     "LOADTL": tool_change,
     "TURRET": tool_change,

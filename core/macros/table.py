@@ -12,6 +12,8 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
 
+from gecent.core.families import HookPoint, MacfunHandler
+from gecent.core.macros.macfun import macfun_handlers
 from gecent.core.macros.model import Kind, Macro, Phase
 from gecent.core.macros.sdl import Key, record_key
 
@@ -58,6 +60,8 @@ class MacroTable:
     events: dict[tuple[Kind, Phase], Placed] = field(default_factory=dict)
     syntax: list[Placed] = field(default_factory=list)
     shadowed: list[Placed] = field(default_factory=list)
+    # the machine's MACFUN handlers at the engine's hook points (core/macros/macfun.py)
+    macfuns: dict[HookPoint, MacfunHandler] = field(default_factory=dict)
     _by_key: dict[Key, tuple[Macro, ...]] = field(default_factory=dict, repr=False)
 
     def event(self, kind: Kind, phase: Phase) -> Macro | None:
@@ -123,6 +127,9 @@ class MacroTable:
             placed.append(Placed(macro, layer, order, info.distribution))
         for order, macro in enumerate((*machine.macros, *(extra or ())), start=len(placed)):
             placed.append(Placed(macro, MACHINE_PACK, order, machine.origin))
-        if not placed:
+        macfuns = macfun_handlers(plugins, machine)
+        if not placed and not macfuns:
             return None
-        return cls.build(placed)
+        table = cls.build(placed)
+        table.macfuns = macfuns
+        return table

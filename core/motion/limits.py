@@ -4,6 +4,8 @@ axis's limits. A 0/0 pair is an axis without limits."""
 
 from __future__ import annotations
 
+from collections.abc import Callable
+
 from gecent.core.errors import Diagnostic, RunStopped
 from gecent.core.machine.definition import MachineDefinition
 
@@ -15,6 +17,8 @@ class SlideLimits:
         self.step = machine.number_option(14)
         self.action = machine.number_option(110)
         self.exceeded = False
+        # the machine's MACFUN limit test (MCHCON 2): True when it did the test itself
+        self.hook: Callable[[tuple[int, ...]], bool] | None = None
         self.limits: tuple[tuple[float, float, int], ...] = ()
         if self.action != 0:
             signs = [1 if target is None else target[1] for target in shuffle[:3]]
@@ -25,6 +29,8 @@ class SlideLimits:
 
     def test(self, position: tuple[int, ...]) -> list[Diagnostic]:
         """The warnings for a point in steps; option 110 = -1 stops the run instead."""
+        if self.hook is not None and self.hook(position):
+            return []
         notes = []
         for axis, (low, high, sign) in enumerate(self.limits):
             if axis >= len(position) or (low == 0 and high == 0):

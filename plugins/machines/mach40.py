@@ -1,6 +1,6 @@
 """MACH40: the sample multiaxis mill (manual §5.6.8.4, seed 001 L27867-28177).
 
-Its MACFUN, MACF40, is not built yet: a run that needs it stops with "not yet supported".
+Its MACFUN, MACF40, is the plugin gecent.plugins.macfuns.macf40.
 """
 
 from gecent.core.families import MachinePack
