@@ -7,7 +7,7 @@ supported" error naming the statement and its line; nothing is written then.
 
 from __future__ import annotations
 
-from collections.abc import Callable, Iterator
+from collections.abc import Callable, Iterable, Iterator
 
 from gecent.core.cl.records import (
     Arelem,
@@ -343,17 +343,23 @@ class Run:
         return self._finish()
 
     def _process_macros(self, records: Iterator[Record]) -> RunResult:
-        """The record loop with a macro engine (core/macros): each record is matched
-        against the user-defined macros; the fast path serves GOTOs only when no macro
-        can see them."""
+        """The record loop with a macro engine (core/macros)."""
         engine = self.macros
         assert engine is not None
         stream = engine.records = Lookahead(records)
         engine.start()
-        fast_ok = engine.hooks.fast_path_allowed()
+        self.feed(stream, engine.hooks.fast_path_allowed())
+        return self.end_of_input()
+
+    def feed(self, records: Iterable[Record], fast_ok: bool) -> None:
+        """Records through the macro engine, each matched against the user-defined macros;
+        the fast path serves GOTOs only when ``fast_ok`` (no macro can see them). A
+        look-ahead's snapshot runs this too."""
+        engine = self.macros
+        assert engine is not None
         fast: FastLinear | None = None
         goto = MotionSubtype.GOTO
-        for record in stream:
+        for record in records:
             if fast_ok and type(record) is Motion and record.subtype is goto:
                 self._next_record(record)
                 circle = self._circle
@@ -368,7 +374,6 @@ class Run:
                 continue
             self.take(record)
             fast = self._fast_path() if fast_ok else None
-        return self.end_of_input()
 
     def _next_record(self, record: Record) -> None:
         self._file = record.file

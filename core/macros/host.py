@@ -3,7 +3,7 @@ run (core/run.py) and the engine satisfy these protocols, so core/macros imports
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Iterable
 from typing import TYPE_CHECKING, Any, Protocol
 
 from gecent.core.dispatch.context import Post
@@ -43,5 +43,7 @@ class MacroHost(Post, Protocol):
     def warn_builtin(self, diagnostic: Diagnostic) -> None: ...
 
     def take(self, record: Record) -> None: ...
+
+    def feed(self, records: Iterable[Record], fast_ok: bool) -> None: ...
 
     def end_of_input(self) -> Any: ...

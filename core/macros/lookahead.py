@@ -45,7 +45,6 @@ def snapshot(run: MacroHost) -> MacroHost:
     clone = copy.deepcopy(run, memo)
     clone.report = _silent
     clone._fast = None  # type: ignore[attr-defined]
-    clone.use_fast_path = False  # type: ignore[attr-defined]
     return clone
 
 
@@ -66,9 +65,12 @@ def look_ahead(run: MacroHost, kind: str) -> Any:
     look._running = set()
     if kind == "tool":
         look._running.add(Kind.MOTION)  # a tool search runs no motion macros (§7.4)
+    # a tool search runs no motion macros: GOTOs may take the fast path, unless a user
+    # macro could make a tool change of one; a motion search must see every motion
+    fast = kind == "tool" and not engine.table.covers((5000, int(MotionSubtype.GOTO)))
+    clone.use_fast_path = fast and clone.fast_allowed  # type: ignore[attr-defined]
     try:
-        for record in engine.records.ahead(LOOKAHEAD_LIMIT):
-            clone.take(record)
+        clone.feed(engine.records.ahead(LOOKAHEAD_LIMIT), fast)
         clone.end_of_input()
     except Found as found:
         return found.value
