@@ -75,9 +75,10 @@ def main() -> None:
             reference = None
             for name, macros in scenarios().items():
                 plugins: PluginSet = base if macros is None else with_macros(base, macros.macros)
-                seconds = best(lambda p=plugins: post(path, p, machine), options.repeat)
+                seconds = best(lambda p=plugins, m=machine: post(path, p, m), options.repeat)
                 reference = reference or seconds
-                print(f"{machine:14s} {name:13s} {seconds:7.3f} s  ratio {seconds / reference:5.2f}")
+                ratio = seconds / reference
+                print(f"{machine:14s} {name:13s} {seconds:7.3f} s  ratio {ratio:5.2f}")
         snapshot_cost(base, path, options.motions)
 
 
