@@ -25,6 +25,7 @@ from gecent.core.cl.records import (
 from gecent.core.cl.stream import Lookahead
 from gecent.core.cl.vocabulary import vocabulary
 from gecent.core.dispatch.context import Post
+from gecent.core.dispatch.elements import Elements
 from gecent.core.dump import state_dump
 from gecent.core.errors import (
     Diagnostic,
@@ -36,7 +37,6 @@ from gecent.core.errors import (
     RunStopped,
     SourcePosition,
 )
-from gecent.core.feed.positioning import FeedType
 from gecent.core.feed.rapid import MODAL, RapidTraverse
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.macros.engine import MacroEngine
@@ -61,7 +61,7 @@ from gecent.core.output.element import OutputElement
 from gecent.core.output.format import FormatOverflow
 from gecent.core.output.modern import modern_output, program_end, program_start
 from gecent.core.output.sinks import CollectSink, Ending, Sinks
-from gecent.core.plugins import PluginSet, get_plugins, macfun_handler
+from gecent.core.plugins import PluginSet, get_plugins
 from gecent.core.reinstate import restat
 from gecent.core.spindle import SpindleElement
 from gecent.core.state import PostState, RunResult
@@ -71,7 +71,7 @@ from gecent.core.tool import ToolElement
 from gecent.core.units import UnitScale
 
 
-class Run:
+class Run(Elements):
     """The state of one run and the record dispatch (spec 02 §7)."""
 
     def __init__(
@@ -124,113 +124,6 @@ class Run:
         table = MacroTable.for_machine(plugins or get_plugins(), machine)
         if table is not None:
             self.macros = install_macros(self, table)
-
-    @property
-    def machine(self) -> MachineDefinition:
-        return self.result.machine
-
-    @property
-    def output(self) -> OutputElement:
-        if self._output is None:
-            self._output = OutputElement(self.state)
-            self._output.emit = self.sinks.emit
-            if self.macros is not None:
-                self.macros.hooks.output_element(self._output)
-            if self.machine.number_option(1) != 0:
-                self._output.positioning_feed = self.feed_type
-        return self._output
-
-    def control_cycle_element(self) -> ControlCycles:
-        if self._control_cycles is None:
-            self._control_cycles = ControlCycles(self.state, self.output.output)
-        return self._control_cycles
-
-    @property
-    def feed_type(self) -> FeedType:
-        """The positioning feed type of option 78 (0 or negative: type 0)."""
-        number = max(0, int(self.machine.number_option(78)))
-        plugins = self.plugins or get_plugins()
-        found = plugins.get("feedtypes", number)
-        if found is None:
-            raise NotYetSupported(f"positioning feed type {number} (option 78): not installed")
-        return found  # type: ignore[no-any-return]
-
-    @property
-    def positioning(self) -> PositioningMotion:
-        if self._positioning is None:
-            self._positioning = PositioningMotion(
-                self.state, self.output.output, self.warn, self.rapid.motion
-            )
-        return self._positioning
-
-    @property
-    def motion(self) -> LinearMotion:
-        if self._motion is None:
-            self._motion = LinearMotion(self.state, self.output.output)
-        return self._motion
-
-    @property
-    def circle(self) -> CircularMotion:
-        if self._circle is None:
-            self._circle = CircularMotion(self.state, self.output.output, self.warn)
-        return self._circle
-
-    @property
-    def rapid(self) -> RapidTraverse:
-        if self._rapid_traverse is None:
-            output = self.output
-            self._rapid_traverse = RapidTraverse(
-                self.state, output.output, output.store_m, output.dwell
-            )
-        return self._rapid_traverse
-
-    @property
-    def spindle(self) -> SpindleElement:
-        if self._spindle is None:
-            plugins = self.plugins or get_plugins()
-            self._spindle = SpindleElement(
-                self.state,
-                self.output,
-                lambda n: plugins.get("spindles", n),
-                self.warn,
-                lambda point: macfun_handler(plugins, self.machine, point),
-                length=self.units.length,
-            )
-        return self._spindle
-
-    @property
-    def thread(self) -> ThreadElement:
-        if self._thread is None:
-            self._thread = ThreadElement(
-                self.state, self.output.output, self.motion, self.warn, self.units.machine_mm
-            )
-        return self._thread
-
-    @property
-    def rotary(self) -> RotaryElement:
-        if self._rotary is None:
-            self._rotary = RotaryElement(self.state, self.output.output, self.warn)
-        return self._rotary
-
-    def rebuild(self, machine: MachineDefinition) -> None:
-        """The elements precompute from the machine: made anew, keeping the times so far
-        (the sinks and what they wrote stay)."""
-        self.result.machine = self.state.machine = machine
-        previous = self._output
-        self._output = self._motion = self._circle = None
-        self._rapid_traverse = self._spindle = self._tool_element = self._rotary = None
-        self._guard = None
-        self._fast = None
-        self.use_fast_path = self.fast_allowed
-        if previous is not None:
-            self.output.cut_minutes = previous.cut_minutes
-            self.output.dwell_minutes = previous.dwell_minutes
-
-    @property
-    def tool(self) -> ToolElement:
-        if self._tool_element is None:
-            self._tool_element = ToolElement(self.state, self.output, self.warn)
-        return self._tool_element
 
     @property
     def current_record(self) -> Record | None:

@@ -87,10 +87,11 @@ class Lookahead:
             raise ValueError("peek looks at least one record ahead")
         return self._buffer[self._start + ahead - 1] if self._fill(ahead) else None
 
-    def ahead(self, limit: int | None = None) -> Iterator[Record]:
-        """The records still to come, read (and held) without consuming them."""
-        ahead = 1
-        while limit is None or ahead <= limit:
+    def ahead(self, limit: int | None = None, skip: int = 0) -> Iterator[Record]:
+        """The records still to come after the first ``skip``, read (and held) without
+        consuming them."""
+        ahead = skip + 1
+        while limit is None or ahead <= limit + skip:
             record = self.peek(ahead)
             if record is None:
                 return

@@ -52,6 +52,17 @@ class Engine(Protocol):
 
     def warn(self, frame: Frame, text: str) -> None: ...
 
+    def flook(self, frame: Frame, context: int, keep: tuple[str, ...]) -> float: ...
+
+    def set_look(self, context: int, value: float) -> None: ...
+
+    def finfo(self, frame: Frame, start: int, end: int | None) -> float: ...
+
+    flook_stack: tuple[int, ...]
+    operations: Any
+
+    def gathered(self, kind: str) -> Any: ...
+
 
 @dataclass
 class Frame:
@@ -104,6 +115,22 @@ class LookaheadFlags:
     active: bool = False  # $LOOKAH
     tool: bool = False  # $TLOOK
     motion: bool = False  # $MLOOK
+    finfo: bool = False  # $ILOOK
+    oe: bool = False  # $OELOOK
+
+
+class _Look:
+    def __init__(self, engine: Engine) -> None:
+        self._engine = engine
+
+    def __setitem__(self, context: int, value: float) -> None:
+        self._engine.set_look(int(context), value)
+
+    def __getitem__(self, context: int) -> int:
+        return self.active(context)
+
+    def active(self, context: int) -> int:
+        return 1 if int(context) in self._engine.flook_stack else 0
 
 
 class MacroContext:
@@ -148,6 +175,37 @@ class MacroContext:
     def state(self) -> PostState:
         """The post's state, to read (writing it bypasses the post's own bookkeeping)."""
         return self._engine.run.state
+
+    @property
+    def look(self) -> _Look:
+        """$LOOK: ``ctx.look[n] = v`` ends $FLOOK context n with v; ``ctx.look.active(n)``."""
+        return _Look(self._engine)
+
+    def flook(self, context: int, keep: tuple[str, ...] = ()) -> float:
+        """$FLOOK(context): the value its look-ahead ends with ($LOOK(context) set, -1 when
+        $FLOOK(context) is called again, -2 at FINI); the ``keep`` globals come back with
+        their future values. ``flook(0)`` is the active context (0 for none)."""
+        return self._engine.flook(self._frame, int(context), tuple(keep))
+
+    def finfo(self, start: int = 0, end: int | None = None) -> float:
+        """$FINFO (§7.8): ``finfo()`` to the end of the coming operation, ``finfo(s, e)``
+        from record s (0: here) past record e (0: to FINI); then ``ctx.info`` holds $INFO.*."""
+        return self._engine.finfo(self._frame, int(start), None if end is None else int(end))
+
+    @property
+    def info(self) -> Any:
+        """$INFO.*: of the $FINFO running (writable), else of the last one (None before)."""
+        return self._engine.gathered("finfo")
+
+    @property
+    def oe(self) -> Any:
+        """$OE.*: of the OPTYPE look-ahead running (writable), else of the last one."""
+        return self._engine.gathered("oe")
+
+    @property
+    def ops(self) -> Any:
+        """The operation tables (§9): ``ops.tab[8, ops.oi]`` is $OPTAB(8,$OI)."""
+        return self._engine.operations
 
     def output(self) -> None:
         self._engine.output(self._frame)

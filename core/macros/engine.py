@@ -22,7 +22,7 @@ from typing import TYPE_CHECKING, Any
 from gecent.core.cl.apt_source import TEXT_MAJORS, AptSourceReader
 from gecent.core.cl.records import Record, Statement
 from gecent.core.cl.vocabulary import vocabulary
-from gecent.core.errors import Diagnostic, GecentError, InputError
+from gecent.core.errors import Diagnostic, GecentError, InputError, NotYetSupported
 from gecent.core.families import HookPoint
 from gecent.core.macros.context import Frame, LookaheadFlags, MacroContext
 from gecent.core.macros.host import MacroHost
@@ -38,7 +38,19 @@ from gecent.core.macros.model import (
     Phase,
     TerminateMacro,
 )
-from gecent.core.macros.params import NoParams, PParams, SyntaxParams
+from gecent.core.macros.operations import NOT_PROCESSED, Operations
+from gecent.core.macros.params import NoParams, OperationEventParams, PParams, SyntaxParams
+from gecent.core.macros.searches import (
+    FINI_FIRST,
+    OPTYPE_FIRST,
+    OPTYPE_WORDS,
+    FlookSearch,
+    Gathered,
+    MotionSearch,
+    OperationSearch,
+    Search,
+    ToolSearch,
+)
 from gecent.core.macros.sysvars import SystemVariables
 from gecent.core.macros.table import MacroTable
 
@@ -58,6 +70,12 @@ class MacroEngine:
         self.sv = SystemVariables(self)
         self.flags = LookaheadFlags()
         self.looking: str | None = None  # the look-ahead this (snapshot) engine runs
+        self.search: Search | None = None  # what it searches for (core/macros/searches.py)
+        self.flook_stack: tuple[int, ...] = ()  # the $FLOOK contexts this engine runs in
+        self.offset = 0  # a snapshot: the records it has read beyond the real run's place
+        self.info: Gathered | None = None  # $INFO.*, from the last $FINFO
+        self.oe: Gathered | None = None  # $OE.*, from the last OPTYPE look-ahead
+        self.operations = Operations()
         self.records: Lookahead | None = None
         self._running: set[Kind] = set()  # event kinds in progress: no re-entry (§4.2 rule 3)
         self._occurrences: dict[str, int] = {}
@@ -68,6 +86,8 @@ class MacroEngine:
 
     def dispatch(self, record: Record) -> None:
         """A record read from the CL file."""
+        if self.search is not None:
+            self.search.record(self.run, record)
         self._match_or_builtin(record, matching=True)
 
     def _active(self) -> set[int]:
@@ -283,6 +303,10 @@ class MacroEngine:
 
     # -- look-ahead ----------------------------------------------------------------------
 
+    def _may_look(self, frame: Frame, what: str) -> None:
+        if frame.macro.kind in _NO_LOOKAHEAD:
+            raise MacroError(f"the {_describe(frame.macro)} macro cannot {what} (§4.3)")
+
     def look(self, kind: str, frame: Frame) -> Any:
         """A look-ahead variable (§7.3): cached in the frame; None inside another
         look-ahead (step 2); else a snapshot of the run searches forward."""
@@ -290,16 +314,101 @@ class MacroEngine:
             return frame.looked[kind]
         if self.looking is not None:
             return None
-        if frame.macro.kind in _NO_LOOKAHEAD:
-            raise MacroError(f"the {_describe(frame.macro)} macro cannot look ahead (§4.3)")
-        result = look_ahead(self.run, kind)
+        self._may_look(frame, "look ahead")
+        search = ToolSearch() if kind == "tool" else MotionSearch()
+        result, _ = look_ahead(self.run, search)
         frame.looked[kind] = result
         return result
 
-    def found(self, kind: str, value: Callable[[], Any]) -> None:
-        """In a look-ahead for ``kind``: end it with the value."""
-        if self.looking == kind:
-            raise Found(value())
+    def flook(self, frame: Frame, context: int, keep: tuple[str, ...]) -> float:
+        """$FLOOK (§7.7): the value the look-ahead of ``context`` ends with."""
+        if context == 0:
+            return float(self.flook_stack[-1]) if self.flook_stack else 0.0
+        if not 1 <= context <= MAX_FLOOK:
+            raise MacroError(f"$FLOOK contexts run from 1 to {MAX_FLOOK}, not {context}")
+        self._may_look(frame, "call $FLOOK")
+        if context in self.flook_stack:
+            if self.search is not None and self.search.context == context:
+                self.search.flook(context)  # on top: ends it with -1
+            return 0.0  # in the stack, not on top: starts nothing (§7.7)
+        if self.looking is not None and self.looking != "flook":
+            return 0.0  # (Q8: no $FLOOK inside another kind of look-ahead)
+        result, clone = look_ahead(self.run, FlookSearch(context))
+        for name in keep:
+            if name in clone.globals:
+                self.globals[name] = clone.globals[name]
+        return float(result)
+
+    def set_look(self, context: int, value: float) -> None:
+        """$LOOK(context) = value: ends that look-ahead if it is the one on top."""
+        if self.search is not None and self.search.context == context:
+            self.search.look(context, value)
+
+    def finfo(self, frame: Frame, start: int, end: int | None) -> float:
+        """$FINFO (§7.8): the last CL record the operation look-ahead read (-2 at FINI,
+        -1 inside another $FINFO); $INFO.* keeps what it gathered."""
+        self._may_look(frame, "call $FINFO")
+        if self.looking == "finfo":
+            return -1.0
+        if self.looking is not None:
+            return -1.0  # (Q8)
+        search = OperationSearch("finfo", self.turning, end)
+        (value, info), _ = look_ahead(self.run, search, start)
+        info.lock()
+        self.info = info
+        return float(value)
+
+    def gathered(self, kind: str) -> Gathered | None:
+        """$INFO.* (``finfo``) or $OE.* (``oe``): the running look-ahead's own while it runs
+        (macros may set them then), else the last one's."""
+        search = self.search
+        if isinstance(search, OperationSearch) and search.kind == kind:
+            return search.info
+        return self.info if kind == "finfo" else self.oe
+
+    @property
+    def turning(self) -> bool:
+        machine = self.run.machine
+        return machine.number_option("machine_type") == 0 or machine.number_option(263) == 2
+
+    def operation_event(self, statement: Statement) -> None:
+        """OPTYPE (§5.9, §7.9): the OPTYPE look-ahead, the operation-event macro, then the
+        operation tables."""
+        if self.search is not None:
+            self.search.optype(self.run)
+        words = statement.words()
+        word = words[0] if words else ""
+        if word not in OPTYPE_WORDS and word != "AUTO":
+            raise InputError(
+                "OPTYPE expects TOOL, MILL, TURN, AXIAL or AUTO first", statement.where
+            )
+        args = statement.args
+        resolved = OPTYPE_WORDS.get(word, NOT_PROCESSED)
+        if self.looking is None and self.enabled(Kind.OPERATION_EVENT):
+            search = OperationSearch("oe", self.turning)
+            (found, info), _ = look_ahead(self.run, search)
+            if word == "AUTO" or found in (OPTYPE_FIRST, FINI_FIRST):
+                resolved = found
+            info.OPTYPE, info.OPARGS = resolved, args
+            info.lock()
+            self.oe = info
+            params = OperationEventParams()
+            for number, value in ((1, resolved), (2, args), (3, statement.number),
+                                  (4, info.P2.CLN), (5, 1 if info.P1.CLN else 0)):  # fmt: skip
+                params.set(number, value)
+            self.single(Kind.OPERATION_EVENT, params, statement, _no_output)
+            if params.changed & {3, 4}:
+                raise NotYetSupported(
+                    "the operation-event macro's redundancy guard ($P3, $P4)", statement.where
+                )
+        self.operations.operation_type(resolved, args)
+
+
+def _no_output(frame: Frame) -> None:
+    raise MacroError("OUTPUT is not allowed in the operation-event macro (§3)")
+
+
+MAX_FLOOK = 5
 
 
 _SWITCH = {

@@ -1,28 +1,32 @@
-"""Variable look-ahead by snapshot (spec 09 §7.2-§7.6, §13.4).
+"""Look-ahead by snapshot (spec 09 §7, §13.4).
 
 A look-ahead copies the run (outputs excluded: the copy writes to no file, reports nothing
-and keeps no blocks), puts the copy's engine in look-ahead mode and feeds it the records
-after the one being processed, peeked from the stream without consuming them. The copy's
-hooks end the search with :class:`Found` when the wanted record comes; at the end of the
-file the copy runs FINI and its machine shutdown macro (§7.6: a macro can force the result
-there, X2). Nothing of the copy survives: the real run goes on from where it was.
+and keeps no blocks), gives the copy's engine a search (core/macros/searches.py) and feeds
+it the records after the one being processed, peeked from the stream without consuming
+them. The copy's hooks tell the search what happens; the search ends the look-ahead with
+its result. At the end of the file the copy runs FINI and its machine shutdown macro (§7.6:
+a macro can force the result there, X2). Nothing of the copy survives but the result (and
+the variables a ``$FLOOK`` keeps): the real run goes on from where it was.
 
 Python frames cannot be resumed, so the copy starts after the current record, as if the
 current macro and the rest of the record's processing had ended (§7.3 step 4); what they
-would still issue is not searched (docs/decisions.md). An error in a later record ends the
-search empty-handed: the real run meets it in its turn.
+would still issue is not searched, and ``$FLOOK`` and ``$FINFO`` return their end value
+at once instead of 0 first (docs/decisions.md). An error in a later record ends the search
+with its FINI result: the real run meets the error in its turn.
 """
 
 from __future__ import annotations
 
 import copy
+from collections.abc import Iterator
 from typing import Any
 
-from gecent.core.cl.records import Motion, MotionSubtype
+from gecent.core.cl.records import MotionSubtype, Record
 from gecent.core.errors import GecentError
-from gecent.core.macros.context import LookaheadFlags, NextMotion
+from gecent.core.macros.context import LookaheadFlags
 from gecent.core.macros.host import MacroHost
 from gecent.core.macros.model import Found, Kind
+from gecent.core.macros.searches import Search
 from gecent.core.output.sinks import Sinks
 
 LOOKAHEAD_LIMIT = 1_000_000  # records a search reads at most (they are held while it runs)
@@ -52,52 +56,48 @@ def _silent(diagnostic: Any) -> None:
     return None
 
 
-def look_ahead(run: MacroHost, kind: str) -> Any:
-    """The value the search for ``kind`` ("tool" or "motion") finds, or its default."""
+def _counted(engine: Any, records: Iterator[Record]) -> Iterator[Record]:
+    """The records a snapshot reads, counted: a look-ahead started inside it goes on from
+    its place in the stream, not the real run's."""
+    for record in records:
+        engine.offset += 1
+        yield record
+
+
+def look_ahead(run: MacroHost, search: Search, start: int = 0) -> tuple[Any, Any]:
+    """Run a copy of the run forward with ``search``: its result, and the copy's engine
+    (for the variables a ``$FLOOK`` keeps). ``start`` skips, uninterpreted, the records
+    before that CL record number (``$FINFO``'s start, §7.8)."""
     engine = run.macros
     assert engine is not None and engine.records is not None
     clone = snapshot(run)
     look = clone.macros
     assert look is not None
-    look.looking = kind
-    look.flags = LookaheadFlags(active=True, tool=kind == "tool", motion=kind == "motion")
+    look.search = search
+    look.looking = search.kind
+    look.flags = LookaheadFlags(
+        active=True, tool=search.kind == "tool", motion=search.kind == "motion",
+        finfo=search.kind == "finfo", oe=search.kind == "oe",
+    )  # fmt: skip
+    if search.context:
+        look.flook_stack = (*engine.flook_stack, search.context)
     look.frames = []
     look._running = set()
-    if kind == "tool":
+    if search.kind == "tool":
         look._running.add(Kind.MOTION)  # a tool search runs no motion macros (§7.4)
-    # a tool search runs no motion macros: GOTOs may take the fast path, unless a user
-    # macro could make a tool change of one; a motion search must see every motion
-    fast = kind == "tool" and not engine.table.covers((5000, int(MotionSubtype.GOTO)))
+    # a tool search may send GOTOs by the fast path unless a user macro could see them;
+    # every other search must see every motion
+    fast = search.kind == "tool" and not engine.table.covers((5000, int(MotionSubtype.GOTO)))
     clone.use_fast_path = fast and clone.fast_allowed  # type: ignore[attr-defined]
+    look.offset = engine.offset
+    records = _counted(look, engine.records.ahead(LOOKAHEAD_LIMIT, engine.offset))
+    if start:
+        records = (r for r in records if r.number >= start)
     try:
-        clone.feed(engine.records.ahead(LOOKAHEAD_LIMIT), fast)
+        clone.feed(records, fast)
         clone.end_of_input()
     except Found as found:
-        return found.value
+        return found.value, look
     except GecentError:
         pass
-    if kind == "motion":
-        return current_motion(run)
-    return None
-
-
-def next_motion(run: MacroHost, record: Motion) -> NextMotion:
-    """Where a motion record ends (its last point), machine and CL values (§7.2)."""
-    position = run.state.position
-    translation = position.translation
-    last = record.points[-1]
-    if record.subtype is MotionSubtype.GODLTA:
-        delta = last if len(last) == 3 else (0.0, 0.0, last[0])
-        machine = tuple(position.previous_part[a] + delta[a] for a in range(3))
-    else:
-        machine = tuple(last[a] + translation[a] for a in range(3))
-    cl = tuple(machine[a] - translation[a] for a in range(3))
-    return NextMotion(machine[0], machine[1], machine[2], cl[0], cl[1], cl[2], record.number)
-
-
-def current_motion(run: MacroHost) -> NextMotion:
-    """§7.3: no next motion: the current position."""
-    position = run.state.position
-    machine = tuple(position.present_part[a] for a in range(3))
-    cl = tuple(machine[a] - position.translation[a] for a in range(3))
-    return NextMotion(machine[0], machine[1], machine[2], cl[0], cl[1], cl[2], None)
+    return search.fini(clone), look

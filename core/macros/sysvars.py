@@ -60,7 +60,14 @@ COMPUTED: dict[str, Callable[[MacroEngine], Any]] = {
     "LOOKAH": lambda engine: engine.flags.active,
     "TLOOK": lambda engine: engine.flags.tool,
     "MLOOK": lambda engine: engine.flags.motion,
+    "ILOOK": lambda engine: engine.flags.finfo,
+    "OELOOK": lambda engine: engine.flags.oe,
+    "OI": lambda engine: engine.operations.oi,
+    "OPSIZ": lambda engine: engine.operations.size,
 }
+# read and written through the operation tables (§9.2)
+LINKED = {"FOI": "foi", "OPTYPE": "optype", "OPARGS": "opargs", "OPNAME": "opname",
+          "OPMERGE": "merge"}  # fmt: skip
 
 
 class SystemVariables:
@@ -86,6 +93,8 @@ class SystemVariables:
         key = self._name(name)
         if key in COMPUTED:
             return COMPUTED[key](self._engine)
+        if key in LINKED:
+            return getattr(self._engine.operations, LINKED[key])
         if key in self._values:
             return self._values[key]
         raise MacroError(f"${key} is not a macro system variable gecent keeps")
@@ -94,6 +103,9 @@ class SystemVariables:
         key = self._name(name)
         if key in COMPUTED:
             raise MacroError(f"${key} is read-only")
+        if key in LINKED:
+            setattr(self._engine.operations, LINKED[key], value)
+            return
         if key not in self._values:
             raise MacroError(f"${key} is not a macro system variable gecent keeps")
         if key in SWITCHES:

@@ -1,0 +1,161 @@
+"""The run's elements (spec 02 §7's subroutine groups as objects), each made when first
+used and made anew when a MACHIN changes the machine's options: output, motion, circle,
+rapid, spindle, tool, thread, rotary, positioning, the control's canned cycles."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from typing import Any
+
+from gecent.core.errors import Diagnostic, NotYetSupported
+from gecent.core.feed.positioning import FeedType
+from gecent.core.feed.rapid import RapidTraverse
+from gecent.core.machine.definition import MachineDefinition
+from gecent.core.motion.circle import CircularMotion
+from gecent.core.motion.control_cycles import ControlCycles
+from gecent.core.motion.fastpath import FastLinear
+from gecent.core.motion.guard import CoordinateGuard
+from gecent.core.motion.linear import LinearMotion
+from gecent.core.motion.positioning import PositioningMotion
+from gecent.core.motion.rotary import RotaryElement
+from gecent.core.motion.thread import ThreadElement
+from gecent.core.output.element import OutputElement
+from gecent.core.output.sinks import Sinks
+from gecent.core.plugins import PluginSet, get_plugins, macfun_handler
+from gecent.core.spindle import SpindleElement
+from gecent.core.state import PostState, RunResult
+from gecent.core.tool import ToolElement
+from gecent.core.units import UnitScale
+
+
+class Elements:
+    """The element part of :class:`gecent.core.run.Run`."""
+
+    plugins: PluginSet | None
+    result: RunResult
+    state: PostState
+    sinks: Sinks
+    units: UnitScale
+    macros: Any
+    fast_allowed: bool
+    use_fast_path: bool
+    warn: Callable[[Diagnostic], None]
+    _output: OutputElement | None
+    _motion: LinearMotion | None
+    _circle: CircularMotion | None
+    _rapid_traverse: RapidTraverse | None
+    _spindle: SpindleElement | None
+    _tool_element: ToolElement | None
+    _rotary: RotaryElement | None
+    _thread: ThreadElement | None
+    _positioning: PositioningMotion | None
+    _control_cycles: ControlCycles | None
+    _guard: CoordinateGuard | None
+    _fast: FastLinear | None
+
+    @property
+    def machine(self) -> MachineDefinition:
+        return self.result.machine
+
+    @property
+    def output(self) -> OutputElement:
+        if self._output is None:
+            self._output = OutputElement(self.state)
+            self._output.emit = self.sinks.emit
+            if self.macros is not None:
+                self.macros.hooks.output_element(self._output)
+            if self.machine.number_option(1) != 0:
+                self._output.positioning_feed = self.feed_type
+        return self._output
+
+    def control_cycle_element(self) -> ControlCycles:
+        if self._control_cycles is None:
+            self._control_cycles = ControlCycles(self.state, self.output.output)
+        return self._control_cycles
+
+    @property
+    def feed_type(self) -> FeedType:
+        """The positioning feed type of option 78 (0 or negative: type 0)."""
+        number = max(0, int(self.machine.number_option(78)))
+        plugins = self.plugins or get_plugins()
+        found = plugins.get("feedtypes", number)
+        if found is None:
+            raise NotYetSupported(f"positioning feed type {number} (option 78): not installed")
+        return found  # type: ignore[no-any-return]
+
+    @property
+    def positioning(self) -> PositioningMotion:
+        if self._positioning is None:
+            self._positioning = PositioningMotion(
+                self.state, self.output.output, self.warn, self.rapid.motion
+            )
+        return self._positioning
+
+    @property
+    def motion(self) -> LinearMotion:
+        if self._motion is None:
+            self._motion = LinearMotion(self.state, self.output.output)
+        return self._motion
+
+    @property
+    def circle(self) -> CircularMotion:
+        if self._circle is None:
+            self._circle = CircularMotion(self.state, self.output.output, self.warn)
+        return self._circle
+
+    @property
+    def rapid(self) -> RapidTraverse:
+        if self._rapid_traverse is None:
+            output = self.output
+            self._rapid_traverse = RapidTraverse(
+                self.state, output.output, output.store_m, output.dwell
+            )
+        return self._rapid_traverse
+
+    @property
+    def spindle(self) -> SpindleElement:
+        if self._spindle is None:
+            plugins = self.plugins or get_plugins()
+            self._spindle = SpindleElement(
+                self.state,
+                self.output,
+                lambda n: plugins.get("spindles", n),
+                self.warn,
+                lambda point: macfun_handler(plugins, self.machine, point),
+                length=self.units.length,
+            )
+        return self._spindle
+
+    @property
+    def thread(self) -> ThreadElement:
+        if self._thread is None:
+            self._thread = ThreadElement(
+                self.state, self.output.output, self.motion, self.warn, self.units.machine_mm
+            )
+        return self._thread
+
+    @property
+    def rotary(self) -> RotaryElement:
+        if self._rotary is None:
+            self._rotary = RotaryElement(self.state, self.output.output, self.warn)
+        return self._rotary
+
+    def rebuild(self, machine: MachineDefinition) -> None:
+        """The elements precompute from the machine: made anew, keeping the times so far
+        (the sinks and what they wrote stay)."""
+        self.result.machine = self.state.machine = machine
+        previous = self._output
+        self._output = self._motion = self._circle = None
+        self._rapid_traverse = self._spindle = self._tool_element = self._rotary = None
+        self._guard = None
+        self._fast = None
+        self.use_fast_path = self.fast_allowed
+        if previous is not None:
+            self.output.cut_minutes = previous.cut_minutes
+            self.output.dwell_minutes = previous.dwell_minutes
+
+    @property
+    def tool(self) -> ToolElement:
+        if self._tool_element is None:
+            self._tool_element = ToolElement(self.state, self.output, self.warn)
+        return self._tool_element

@@ -1,0 +1,183 @@
+"""The statements the event macros wrap (spec 09 §5): TOOLNO, LOADTL and TURRET (tool
+change), TRANS (LCS), BREAK, CYCLE (the MACFUN cycle sequence), and OPTYPE and OPNAME,
+which only the macro layer gives a meaning. Each takes the run, as the post's own statement
+handlers do, so a look-ahead's snapshot of the run carries them unchanged."""
+
+from __future__ import annotations
+
+from typing import Any
+
+from gecent.core.cl.records import Statement, Word
+from gecent.core.cl.vocabulary import vocabulary
+from gecent.core.errors import NotYetSupported
+from gecent.core.families import HookPoint
+from gecent.core.macros.host import MacroHost
+from gecent.core.macros.model import Kind, Phase
+from gecent.core.macros.params import LcsParams, NoParams, ToolChangeParams
+
+
+def tool_change(run: MacroHost, statement: Statement) -> None:
+    """TOOLNO, LOADTL and TURRET with the tool change macros around them (§5.4-5.5); the
+    first tool change takes the first-tool-change macros when there are any ($FT = 0)."""
+    engine = run.macros
+    assert engine is not None
+    params = _tool_params(statement)
+    if engine.search is not None:
+        engine.search.tool_change(run, params.tool_id)
+    table = engine.table
+    first = engine.sv.get("FT") == 0 and (
+        table.event(Kind.FIRST_TOOL_CHANGE, Phase.STARTUP) is not None
+        or table.event(Kind.FIRST_TOOL_CHANGE, Phase.SHUTDOWN) is not None
+    )
+    kind = Kind.FIRST_TOOL_CHANGE if first else Kind.TOOL_CHANGE
+    original = run.builtin_statement(statement.major)
+
+    def builtin() -> None:
+        changed = _tool_statement(statement, params)
+        fields = {"record": changed, "values": changed.numbers(), "words": changed.words()}
+        hooks = engine.hooks
+        if not hooks.macfun(HookPoint.TOOLNO, **fields) and not hooks.macfun(
+            HookPoint.LOAD, **fields
+        ):
+            original(run, changed)
+        engine.sv["FT"] = 1  # a tool is in: the shutdown macro may set it to 0 again
+        engine.operations.tool_change(params.tool_id)  # a new operation (§9.1)
+
+    engine.event(kind, params, statement, builtin)
+
+
+def _tool_params(statement: Statement) -> ToolChangeParams:
+    args = statement.args
+    numbers = [float(a) for a in args if not isinstance(a, Word)]
+    words = statement.words()
+    params = ToolChangeParams()
+    tool = numbers[0] if numbers else None
+    pocket = tool
+    if statement.major == "TURRET" and len(args) > 1 and not isinstance(args[1], Word):
+        pocket = float(args[1])
+    params.set(1, pocket)
+    params.set(2, 2.0 if "NEXT" in words else 1.0)
+    params.set(3, 2.0)
+    params.set(4, 1.0 if "CLW" in words else 2.0 if "CCLW" in words else None)
+    params.set(5, _after(args, "OFSETL"))
+    params.set(6, _after(args, "LENGTH"))
+    params.set(9, tool)
+    params.set(18, 2.0 if "REAR" in words else 1.0 if "FRONT" in words else None)
+    return params
+
+
+def _after(args: tuple[Any, ...], name: str) -> float | None:
+    for index, arg in enumerate(args[:-1]):
+        if isinstance(arg, Word) and arg.name == name and not isinstance(args[index + 1], Word):
+            return float(args[index + 1])
+    return None
+
+
+def _tool_statement(statement: Statement, params: ToolChangeParams) -> Statement:
+    """The statement with what the startup macro changed: the tool ($P9, or $P1 when it
+    alone changed), the offset ($P5), the length ($P6) and the turn ($P4)."""
+    changed = params.changed
+    if not changed & {1, 4, 5, 6, 9}:
+        return statement
+    if changed - {1, 4, 5, 6, 9}:
+        numbers = ", ".join(f"$P{n}" for n in sorted(changed - {1, 4, 5, 6, 9}))
+        raise NotYetSupported(f"a tool change macro's changed {numbers}", statement.where)
+    args = list(statement.args)
+    tool = params.tool_id if 9 in changed or 1 not in changed else params.pocket
+    if statement.major == "TURRET" and 1 in changed and 9 in changed:
+        args[1:2] = [float(params.pocket)]
+    args[0] = float(tool)
+    for number, name in ((5, "OFSETL"), (6, "LENGTH")):
+        if number in changed:
+            args = _set_after(args, name, params[number])
+    if 4 in changed:
+        args = [a for a in args if not (isinstance(a, Word) and a.name in ("CLW", "CCLW"))]
+        if params.drum in (1, 3):
+            args.append(_word_of("CLW"))
+        elif params.drum in (2, 4):
+            args.append(_word_of("CCLW"))
+    return Statement(statement.file, statement.line, statement.number, statement.major,
+                     statement.code, tuple(args), statement.text)  # fmt: skip
+
+
+def _word_of(name: str) -> Word:
+    return Word(name, vocabulary().minor_code(name))
+
+
+def _set_after(args: list[Any], name: str, value: Any) -> list[Any]:
+    for index, arg in enumerate(args[:-1]):
+        if isinstance(arg, Word) and arg.name == name:
+            if value is None:
+                return args[:index] + args[index + 2 :]
+            return [*args[: index + 1], float(value), *args[index + 2 :]]
+    if value is None:
+        return args
+    return [*args, _word_of(name), float(value)]
+
+
+def trans(run: MacroHost, statement: Statement) -> None:
+    """TRANS with the LCS macros around it (§5.8): gecent's immediate LCS change."""
+    engine = run.macros
+    assert engine is not None
+    original = run.builtin_statement("TRANS")
+    numbers = statement.numbers()
+    translation = tuple((*(run.units.length(v) for v in numbers), 0.0, 0.0, 0.0)[:3])
+    params = LcsParams()
+    for number, value in ((1, 1.0), (2, 10.0 if any(translation) else 0.0), (3, 0.0),
+                          (4, (1.0, 0.0, 0.0, translation[0], 0.0, 1.0, 0.0, translation[1],
+                               0.0, 0.0, 1.0, translation[2])),
+                          (5, 0.0), (9, translation), (21, 0.0)):  # fmt: skip
+        params.set(number, value)
+    engine.event(Kind.LCS, params, statement, lambda: original(run, statement))
+
+
+def break_(run: MacroHost, statement: Statement) -> None:
+    """BREAK: the break shutdown macro wraps up the old segment, the startup one begins the
+    next (§5.3: shutdown first)."""
+    engine = run.macros
+    assert engine is not None
+    original = run.builtin_statement("BREAK")
+    shutdown = engine.table.event(Kind.BREAK, Phase.SHUTDOWN)
+    startup = engine.table.event(Kind.BREAK, Phase.STARTUP)
+    if shutdown is not None:
+        engine.run_event(shutdown, NoParams(), statement)
+    original(run, statement)
+    if startup is not None:
+        engine.run_event(startup, NoParams(), statement)
+
+
+def cycle_statement(run: MacroHost, statement: Statement) -> None:
+    """CYCLE: the machine's MACFUN cycle sequence first (MCHCON 7)."""
+    engine = run.macros
+    if engine.hooks.macfun(
+        HookPoint.CYCLE, record=statement, values=statement.numbers(), words=statement.words()
+    ):
+        return
+    run.builtin_statement("CYCLE")(run, statement)
+
+
+def optype(run: MacroHost, statement: Statement) -> None:
+    """OPTYPE/type[, args]: the operation event (§5.9); a word the post alone does not
+    know (without macros it is warned about and disregarded)."""
+    run.macros.operation_event(statement)
+
+
+def opname(run: MacroHost, statement: Statement) -> None:
+    """OPNAME/name: $OPNAME and the operation table's name column (§9.2)."""
+    name = statement.text or " ".join(str(a) for a in statement.args)
+    operations = run.macros.operations
+    operations.opname = name
+    if not operations.full:
+        operations.tab.put(5, operations.oi, name)
+
+
+STATEMENT_HOOKS = {
+    "OPTYPE": optype,
+    "OPNAME": opname,
+    "CYCLE": cycle_statement,
+    "TOOLNO": tool_change,
+    "LOADTL": tool_change,
+    "TURRET": tool_change,
+    "TRANS": trans,
+    "BREAK": break_,
+}
