@@ -24,7 +24,7 @@ from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any, NoReturn, Protocol
 
 from gecent.core.macros.host import MacroHost
-from gecent.core.macros.model import TerminateMacro
+from gecent.core.macros.model import MacroError, TerminateMacro
 from gecent.core.macros.params import PParams
 
 if TYPE_CHECKING:
@@ -206,6 +206,14 @@ class MacroContext:
     def ops(self) -> Any:
         """The operation tables (§9): ``ops.tab[8, ops.oi]`` is $OPTAB(8,$OI)."""
         return self._engine.operations
+
+    def format_register(self, index: int, value: float) -> str:
+        """A value in register ``index``'s own format, letter first ($FSWRIT($FREGFMT(n),
+        value), X10); an error names a register the machine has not."""
+        for formatter in self._engine.run.output.words.formatters:
+            if formatter.location == int(index):
+                return f"{formatter.letter}{formatter.format(float(value)).punched}"
+        raise MacroError(f"register {index} is not one of this machine's registers")
 
     def output(self) -> None:
         self._engine.output(self._frame)

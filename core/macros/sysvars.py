@@ -11,6 +11,7 @@ import re
 from collections.abc import Callable
 from typing import TYPE_CHECKING, Any
 
+from gecent.core.absent import ABSENT
 from gecent.core.macros.model import MacroError
 
 if TYPE_CHECKING:
@@ -63,6 +64,7 @@ COMPUTED: dict[str, Callable[[MacroEngine], Any]] = {
     "ILOOK": lambda engine: engine.flags.finfo,
     "OELOOK": lambda engine: engine.flags.oe,
     "OI": lambda engine: engine.operations.oi,
+    "TLMODE": lambda engine: 0 if engine.run.state.feed.rapid_ipm else 1,  # 0 rapid, 1 feed
     "OPSIZ": lambda engine: engine.operations.size,
 }
 # read and written through the operation tables (§9.2)
@@ -101,6 +103,10 @@ class SystemVariables:
 
     def __setitem__(self, name: str, value: Any) -> None:
         key = self._name(name)
+        if key == "TLMODE":
+            # X20: a motion code INSERTed by hand; the next move states its G again
+            self._engine.run.output.words.previous_g = ABSENT
+            return
         if key in COMPUTED:
             raise MacroError(f"${key} is read-only")
         if key in LINKED:
