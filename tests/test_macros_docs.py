@@ -40,6 +40,8 @@ def examples() -> list[tuple[str, str, str, str, str]]:
 
 def test_the_doc_has_its_three_examples() -> None:
     assert [kind for kind, *_ in examples()] == ["python", "python", "machine"]
+    # the second is the acme-mill pack's macros.py, as shipped
+    assert examples()[1][2] == (PACK / "acme_mill" / "macros.py").read_text(encoding="utf-8")
 
 
 @pytest.mark.parametrize("example", examples(), ids=lambda e: f"{e[0]}-{e[1] or 'file'}")

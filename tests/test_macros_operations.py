@@ -92,6 +92,7 @@ def test_finfo_gathers_the_operation_ahead() -> None:
         info = ctx.info
         found.append((last, info.P1.CLN, info.P2.C[:3], info.P3.C[:3], info.P4.CLN,
                       info.OPCNT, info.ISIL, info.ISIP, info.ISIC, info.V[7]))  # fmt: skip
+        found.append((info.TLMAX, info.TLMIN, info.TLSUM[4], info.TLSUM[0] > 0))
         info.V[7] = "late"  # ignored: the look-ahead is over (§7.8)
         info.OPCNT = 99
         assert ctx.info.V[7] == "marked" and ctx.info.OPCNT == 1
@@ -105,8 +106,10 @@ def test_finfo_gathers_the_operation_ahead() -> None:
     post(program.replace("GOTO/20,0,-2\n", "GOTO/20,0,-2\nPPRINT/HERE\n"), macros)
     # stopped at the rapid after the cut (record 12); P1 the first move, P2 the cut's
     # start, P3 the last cut's end, P4 the last rapid; V7 set by a macro during the search
-    assert found == [(12.0, 6, (10.0, 0.0, 5.0), (20.0, 0.0, -2.0), 12, 1, True, True, False,
-                      "marked")]  # fmt: skip
+    assert found[0] == (12.0, 6, (10.0, 0.0, 5.0), (20.0, 0.0, -2.0), 12, 1, True, True, False,
+                        "marked")  # fmt: skip
+    # the operation's extents (X, Y, Z) and its highest feed, and time at feed
+    assert found[1] == ((20.0, 0.0, 5.0), (10.0, 0.0, -2.0), 200.0, True)  # points reached
 
 
 def test_finfo_with_an_end_spans_operations_and_fini_gives_minus_two() -> None:

@@ -30,6 +30,7 @@ LOADTL/1
 SPINDL/1350,CLW
 COOLNT/MIST
 FEDRAT/10
+OPTYPE/MILL,FINISH
 GOTO/1,0,0
 LOADTL/2
 SPINDL/900,CLW
@@ -78,12 +79,17 @@ def test_the_acme_pack_posts_its_tool_changes_with_its_macros(acme: PluginSet) -
     # the machine file's macro: a dwell after the mist
     mist = next(line for line in lines if "M07" in line)
     assert mist.startswith("N005G04X+00015")  # M07 rides in the dwell block (STOREM)
+    assert "(MILL FINISH S1350 F10)" in lines  # the operation header (listing)
     assert warnings == []
 
 
 def test_the_acme_macros_are_listed_with_their_machine(acme: PluginSet) -> None:
     listed = {key: info for key, info in acme.family("macros").items()}
-    assert {"acme-vmc1:tool_change", "acme-vmc1:stage_next_tool"} <= set(listed)
+    assert {
+        "acme-vmc1:tool_change",
+        "acme-vmc1:stage_next_tool",
+        "acme-vmc1:operation_header",
+    } <= set(listed)
     assert listed["acme-vmc1:tool_change"].distribution == "acme-mill"
     pack = acme.machine("acme-vmc1")
     assert pack is not None

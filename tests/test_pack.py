@@ -54,6 +54,7 @@ def test_acme_pack_in_a_fresh_virtual_environment(tmp_path: Path) -> None:
         ("macfuns", "acme-vmc1"),
         ("macros", "acme-vmc1:tool_change"),
         ("macros", "acme-vmc1:stage_next_tool"),
+        ("macros", "acme-vmc1:operation_header"),
     }
     assert acme[("machines", "acme-vmc1")]["module"] == "acme_mill.machine"
     assert data["failures"] == []

@@ -26,6 +26,7 @@ from gecent.core.errors import GecentError
 from gecent.core.macros.context import LookaheadFlags
 from gecent.core.macros.host import MacroHost
 from gecent.core.macros.model import Found, Kind
+from gecent.core.macros.operations import OperationSink
 from gecent.core.macros.searches import Search
 from gecent.core.output.sinks import Sinks
 
@@ -81,6 +82,9 @@ def look_ahead(run: MacroHost, search: Search, start: int = 0) -> tuple[Any, Any
     )  # fmt: skip
     if search.context:
         look.flook_stack = (*engine.flook_stack, search.context)
+    operations = getattr(search, "operations", None)
+    if operations is not None:  # the span's extents and times ($INFO.TLMAX, ...)
+        clone.sinks.add(OperationSink(operations, clone.state))
     look.frames = []
     look._running = set()
     if search.kind == "tool":

@@ -25,6 +25,7 @@ from gecent.core.cl.records import Motion, MotionSubtype, Record
 from gecent.core.feed.rapid import MODAL
 from gecent.core.macros.context import NextMotion
 from gecent.core.macros.model import Found, MacroError
+from gecent.core.macros.operations import Operations
 
 if TYPE_CHECKING:
     from gecent.core.macros.host import MacroHost
@@ -118,6 +119,11 @@ class Gathered:
     P3: KeyMotion = field(default_factory=KeyMotion)
     P4: KeyMotion = field(default_factory=KeyMotion)
     OPCNT: int = 0
+    # the span's extents and times ($INFO only): X, Y, Z max and min in machine units,
+    # and $OPSUM's seven sums (feed s, positioning s, other s, feed and speed min/max)
+    TLMAX: tuple[float | None, ...] = ()
+    TLMIN: tuple[float | None, ...] = ()
+    TLSUM: tuple[float, ...] = ()
     ISIP: bool = False  # rapid positioning
     ISIL: bool = False  # linear interpolation
     ISIC: bool = False  # 2-D circular interpolation
@@ -196,6 +202,7 @@ class OperationSearch(Search):
     """The OPTYPE look-ahead (``oe``) and ``$FINFO`` (``finfo``)."""
 
     def __init__(self, kind: str, turning: bool, end: int | None = None) -> None:
+        self.operations = Operations()  # the span's blocks, counted by an OperationSink
         self.kind = kind
         self.turning = turning
         self.end = end  # None: to the operation's end; 0: to FINI; n: past record n
@@ -206,7 +213,16 @@ class OperationSearch(Search):
         self.first_type: float | None = None
 
     def _done(self, value: Any) -> None:
-        raise Found((value, self.info))
+        raise Found(self.result(value))
+
+    def result(self, value: Any) -> tuple[Any, Gathered]:
+        info = self.info
+        if self.kind == "finfo":
+            operations = self.operations
+            info.TLMAX = tuple(operations.max[axis, 1] for axis in (1, 2, 3))
+            info.TLMIN = tuple(operations.min[axis, 1] for axis in (1, 2, 3))
+            info.TLSUM = tuple(operations.sum[column, 1] for column in range(1, 8))
+        return (value, info)
 
     def record(self, run: MacroHost, record: Record) -> None:
         if self.kind == "finfo" and self.end and record.number > self.end:
@@ -261,7 +277,7 @@ class OperationSearch(Search):
             self.cutting = False
 
     def fini(self, run: MacroHost) -> Any:
-        return (FINI_FIRST, self.info)
+        return self.result(FINI_FIRST)
 
 
 class FlookSearch(Search):
