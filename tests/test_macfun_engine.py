@@ -153,3 +153,20 @@ def test_a_macfun_is_not_called_without_option_133() -> None:
     plugins = with_macfun(Macfun("mine", "linuxcnc-mill", "test", {HookPoint.FROM: check}))
     run = run_on("linuxcnc-mill", "PARTNO T\nUNITS/MM\nFROM/0,0,10\nFINI\n", plugins)
     assert calls == [] and run.macros is None
+
+
+def test_machin_turning_macfun_off_mid_run_stops_its_hooks() -> None:
+    on = run_on("mach40", "PARTNO T\nFROM/0,0,0\nFINI\n")
+    off = run_on("mach40", "PARTNO T\nMACHIN/GECENT,40,OPTAB,133,0\nFROM/0,0,0\nFINI\n")
+    assert macf40.FROM_WARNING in texts(on)
+    assert macf40.FROM_WARNING not in texts(off)
+
+
+def test_machin_turning_macfun_on_mid_run_is_not_built() -> None:
+    def check(context: MacfunContext) -> HookResult:
+        return HookResult.CONTINUE
+
+    plugins = with_macfun(Macfun("mine", "mach23", "test", {HookPoint.FROM: check}))
+    assert run_on("mach23", "PARTNO T\nFROM/0,0,0\nFINI\n", plugins).macros is None
+    with pytest.raises(Exception, match="MACFUN turned on by MACHIN"):
+        run_on("mach23", "PARTNO T\nMACHIN/GECENT,23,OPTAB,133,1\nFINI\n", plugins)

@@ -465,3 +465,18 @@ def test_system_variables_are_checked_by_name() -> None:
 
     with pytest.raises(Exception, match=r"\$NOSUCH is not a macro system variable"):
         post(HEAD + "FINI\n", macros)
+
+
+def test_cycle_macros_on_a_positioning_machine_are_not_built_and_say_so() -> None:
+    macros = Macros(machine="mach24")
+
+    @macros.event(Kind.CYCLE, Phase.STARTUP)
+    def before(ctx):  # type: ignore[no-untyped-def]
+        return None
+
+    program = (
+        "PARTNO T\nFROM/0,0,1\nSPINDL/500\nFEDRAT/10\nCYCLE/DRILL,DEPTH,.5,CLEAR,.1,IPM,5\n"
+        "GOTO/1,1,0\nCYCLE/OFF\nFINI\n"
+    )
+    with pytest.raises(NotYetSupported, match="cycle macros on a positioning machine"):
+        post(program, macros, "mach24")

@@ -11,6 +11,7 @@ from gecent.core.errors import Diagnostic, NotYetSupported
 from gecent.core.feed.positioning import FeedType
 from gecent.core.feed.rapid import RapidTraverse
 from gecent.core.machine.definition import MachineDefinition
+from gecent.core.macros.macfun import macfun_handlers
 from gecent.core.motion.circle import CircularMotion
 from gecent.core.motion.control_cycles import ControlCycles
 from gecent.core.motion.fastpath import FastLinear
@@ -143,6 +144,7 @@ class Elements:
     def rebuild(self, machine: MachineDefinition) -> None:
         """The elements precompute from the machine: made anew, keeping the times so far
         (the sinks and what they wrote stay)."""
+        self._macfun_check(machine)
         self.result.machine = self.state.machine = machine
         previous = self._output
         self._output = self._motion = self._circle = None
@@ -153,6 +155,15 @@ class Elements:
         if previous is not None:
             self.output.cut_minutes = previous.cut_minutes
             self.output.dwell_minutes = previous.dwell_minutes
+
+    def _macfun_check(self, machine: MachineDefinition) -> None:
+        """MACHIN may turn the machine's MACFUN (option 133) on or off: the engine's hook
+        points follow; a MACFUN turned on with no engine running is not built."""
+        handlers = macfun_handlers(self.plugins or get_plugins(), machine)
+        if self.macros is not None:
+            self.macros.table.macfuns = handlers
+        elif handlers:
+            raise NotYetSupported("MACFUN turned on by MACHIN (option 133) after the start")
 
     @property
     def tool(self) -> ToolElement:

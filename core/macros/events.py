@@ -125,6 +125,13 @@ class EventHooks:
         """The post's motion, after the MACFUN FROM test (MCHCON 8) or thread sequence
         (MCHCON 12) where the machine has them."""
         run = self.run
+        if (
+            run.cycle is not None
+            and record.subtype is not MotionSubtype.FROM
+            and run.machine.number_option(1) != 0
+            and self.engine.table.has(Kind.CYCLE)
+        ):
+            raise NotYetSupported("cycle macros on a positioning machine (CYCLGP)", record.where)
         macfuns = self.engine.table.macfuns
         if macfuns:
             hook = None
