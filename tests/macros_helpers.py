@@ -7,7 +7,7 @@ from gecent.core.cl.records import Record
 from gecent.core.macros import Macro, Macros
 from gecent.core.macros.table import with_macros
 from gecent.core.output.tape import tape_image
-from gecent.core.plugins import get_plugins
+from gecent.core.plugins import PluginSet, get_plugins
 from gecent.core.run import Run
 from gecent.core.state import RunResult
 
@@ -25,10 +25,11 @@ def post(
     macros: Macros | list[Macro] | None,
     machine: str = "linuxcnc-mill",
     fast: bool = True,
+    plugins: PluginSet | None = None,
 ) -> tuple[str, RunResult]:
     """The tape image and the result of posting ``text`` with the macros."""
     listed = [] if macros is None else macros.macros if isinstance(macros, Macros) else macros
-    plugins = with_macros(get_plugins(), listed)
+    plugins = with_macros(plugins or get_plugins(), listed)
     pack = plugins.machine(machine)
     assert pack is not None
     run = Run(pack.load(), plugins, fast=fast)
