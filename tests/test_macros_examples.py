@@ -18,7 +18,6 @@ import math
 import pytest
 from gecent.core.errors import NotYetSupported
 from gecent.core.macros import Kind, Macros, Phase
-from gecent.core.macros.context import MacroContext
 
 from .macros_helpers import post
 
@@ -71,11 +70,41 @@ def test_x4_flook_keeps_future_values() -> None:
     assert kept == [[0.0, 5.0, 7.0] + [0.0] * 9]
 
 
-def test_x9_fget_and_tapewt_are_not_offered() -> None:
-    """X9's $FGET and TAPEWT (fetch and output later records early) are not built: the
-    context has no such calls, and the OE macro's guard ($P3, $P4) says so when changed
-    (tests/test_macros_operations.py)."""
-    assert not hasattr(MacroContext, "fget") and not hasattr(MacroContext, "tapewt")
+def test_x9_oe_macro_outputs_spindle_and_coolant_early() -> None:
+    """X9: the OE macro fetches the operation's SPINDL and COOLNT ($FGET between its $P3
+    and $P4) and outputs them now (TAPEWT); reached later, they are not output again."""
+    macros = Macros()
+
+    @macros.event(Kind.OPERATION_EVENT)
+    def early(ctx):  # type: ignore[no-untyped-def]
+        found = ctx.fget(("SPINDL", "COOLNT"), ctx.p[3], ctx.p[4])
+        while found > 0:
+            ctx.tapewt(found)
+            found = ctx.fget(("SPINDL", "COOLNT"), found + 1, ctx.p[4])
+
+    program = HEAD + (
+        "OPTYPE/MILL\nRAPID\nGOTO/10,0,5\nCOOLNT/FLOOD\nSPINDL/1000\nGOTO/10,0,-2\n"
+        "GOTO/20,0,-2\nFINI\n"
+    )
+    tape, _ = post(program, macros)
+    plain, _ = post(program, None)
+    lines = tape.splitlines()
+    rapid = next(i for i, line in enumerate(lines) if "G00" in line)
+    assert any("S1000" in line for line in lines[:rapid])  # before the first move
+    assert any("M08" in line for line in lines[:rapid])
+    assert sum("S1000" in line for line in lines) == 1 and sum("M08" in line for line in lines) == 1
+    assert plain != tape and sum("S1000" in line for line in plain.splitlines()) == 1
+
+
+def test_x9_tapewt_of_a_record_not_ahead_is_named() -> None:
+    macros = Macros()
+
+    @macros.syntax("STOP")
+    def back(ctx):  # type: ignore[no-untyped-def]
+        ctx.tapewt(1)
+
+    with pytest.raises(Exception, match="TAPEWT: record 1 is not ahead"):
+        post(HEAD + "STOP\nFINI\n", macros)
 
 
 def test_x10_register_output_as_the_sine() -> None:

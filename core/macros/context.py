@@ -58,6 +58,10 @@ class Engine(Protocol):
 
     def finfo(self, frame: Frame, start: int, end: int | None) -> float: ...
 
+    def fget(self, majors: tuple[str, ...], first: int, last: int) -> int: ...
+
+    def tapewt(self, frame: Frame, number: int) -> None: ...
+
     flook_stack: tuple[int, ...]
     operations: Any
 
@@ -206,6 +210,15 @@ class MacroContext:
     def ops(self) -> Any:
         """The operation tables (§9): ``ops.tab[8, ops.oi]`` is $OPTAB(8,$OI)."""
         return self._engine.operations
+
+    def fget(self, majors: tuple[str, ...] | list[str], first: int, last: int = 0) -> int:
+        """$FGET (X9): the record number of the first statement ahead, from record
+        ``first`` to ``last`` (0: the end), whose major word is listed; -1 if none."""
+        return self._engine.fget(tuple(majors), int(first), int(last))
+
+    def tapewt(self, number: int) -> None:
+        """TAPEWT (X9): that record ahead processed now; it is skipped when reached."""
+        self._engine.tapewt(self._frame, int(number))
 
     def format_register(self, index: int, value: float) -> str:
         """A value in register ``index``'s own format, letter first ($FSWRIT($FREGFMT(n),

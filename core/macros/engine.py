@@ -76,6 +76,7 @@ class MacroEngine:
         self.info: Gathered | None = None  # $INFO.*, from the last $FINFO
         self.oe: Gathered | None = None  # $OE.*, from the last OPTYPE look-ahead
         self.operations = Operations()
+        self.written: set[int] = set()  # records TAPEWT processed early: skipped when read
         self.records: Lookahead | None = None
         self._running: set[Kind] = set()  # event kinds in progress: no re-entry (§4.2 rule 3)
         self._occurrences: dict[str, int] = {}
@@ -88,7 +89,42 @@ class MacroEngine:
         """A record read from the CL file."""
         if self.search is not None:
             self.search.record(self.run, record)
+        if self.written and record.number in self.written:
+            self.written.discard(record.number)  # TAPEWT processed it already
+            return
         self._match_or_builtin(record, matching=True)
+
+    def fget(self, majors: tuple[str, ...], first: int, last: int) -> int:
+        """$FGET (X9): the CL record number of the first record from ``first`` to
+        ``last`` (0: to the end) whose major word is one of ``majors``, else -1."""
+        assert self.records is not None
+        wanted = {m.upper() for m in majors}
+        for record in self.records.ahead(None, self.offset):
+            if last and record.number > last:
+                break
+            if (
+                record.number >= first
+                and isinstance(record, Statement)
+                and record.major in wanted
+                and record.number not in self.written
+            ):
+                return record.number
+        return -1
+
+    def tapewt(self, frame: Frame, number: int) -> None:
+        """TAPEWT (X9): the record ``number`` ahead processed now (through the user
+        macros, as if read); when it is read later it is skipped."""
+        self._commands_allowed(frame)
+        assert self.records is not None
+        for record in self.records.ahead(None, self.offset):
+            if record.number == number:
+                if number not in self.written:
+                    self.written.add(number)
+                    self._match_or_builtin(record, frame.matching)
+                return
+            if record.number > number:
+                break
+        raise MacroError(f"TAPEWT: record {number} is not ahead in the CL file")
 
     def _active(self) -> set[int]:
         return {id(frame.macro) for frame in self.frames}
