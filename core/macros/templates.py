@@ -23,14 +23,25 @@ is loaded, so a syntax error names the file, the table and the entry.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any
+from functools import cache
+from typing import TYPE_CHECKING, Any
 
-import jinja2
 from gecent.core.macros.model import SINGLE_EVENTS, Kind, Macro, MacroError, Phase
 
-_ENVIRONMENT = jinja2.Environment(
-    undefined=jinja2.StrictUndefined, autoescape=False, keep_trailing_newline=False
-)
+if TYPE_CHECKING:
+    import jinja2
+
+
+@cache
+def _environment() -> jinja2.Environment:
+    """Jinja, imported only when a machine file has macros (a post starts faster)."""
+    import jinja2
+
+    return jinja2.Environment(
+        undefined=jinja2.StrictUndefined, autoescape=False, keep_trailing_newline=False
+    )
+
+
 EVENT_NAMES = {kind.value: kind for kind in Kind if kind is not Kind.SYNTAX}
 
 
@@ -55,6 +66,8 @@ class TemplateBody:
             "globals": ctx.globals,
             "locals": ctx.locals,
         }
+        import jinja2
+
         for source, template in zip(self.lines, self.templates, strict=True):
             try:
                 text = template.render(names).strip()
@@ -82,10 +95,12 @@ def template_macro(
     """A macro from a machine file's ``[[macros]]`` entry; ValueError says what is wrong."""
     if (sdl is None) == (event is None):
         raise ValueError("a macro has either an sdl (user-defined) or an event, not both")
+    import jinja2
+
     templates = []
     for line in body:
         try:
-            templates.append(_ENVIRONMENT.from_string(line))
+            templates.append(_environment().from_string(line))
         except jinja2.TemplateSyntaxError as error:
             raise ValueError(f"body line {line!r}: {error.message}") from None
     compiled = TemplateBody(tuple(body), tuple(templates))
