@@ -161,7 +161,7 @@ class Elements:
         points follow; a MACFUN turned on with no engine running is not built."""
         handlers = macfun_handlers(self.plugins or get_plugins(), machine)
         if self.macros is not None:
-            self.macros.table.macfuns = handlers
+            self.macros.macfuns = handlers  # (the engine's own: a snapshot's stays its own)
         elif handlers:
             raise NotYetSupported("MACFUN turned on by MACHIN (option 133) after the start")
 

@@ -20,7 +20,7 @@ from collections.abc import Callable
 from typing import TYPE_CHECKING, Any
 
 from gecent.core.cl.apt_source import TEXT_MAJORS, AptSourceReader
-from gecent.core.cl.records import Record, Statement
+from gecent.core.cl.records import Comment, PartText, Record, Statement
 from gecent.core.cl.vocabulary import vocabulary
 from gecent.core.errors import Diagnostic, GecentError, InputError, NotYetSupported
 from gecent.core.families import HookPoint
@@ -77,6 +77,7 @@ class MacroEngine:
         self.oe: Gathered | None = None  # $OE.*, from the last OPTYPE look-ahead
         self.operations = Operations()
         self.written: set[int] = set()  # records TAPEWT processed early: skipped when read
+        self.macfuns = dict(table.macfuns)  # the MACFUN hook points in force (MACHIN may change)
         self.records: Lookahead | None = None
         self._running: set[Kind] = set()  # event kinds in progress: no re-entry (§4.2 rule 3)
         self._occurrences: dict[str, int] = {}
@@ -204,6 +205,7 @@ class MacroEngine:
             raise MacroError(f"command {text!r}: {error.message}") from None
         for record in records:
             record.line, record.number = line, number
+            self._allowed_in(frame, record)
             self._match_or_builtin(record, frame.matching)
 
     def text(self, frame: Frame, major: str, text: str) -> None:
@@ -220,6 +222,18 @@ class MacroEngine:
         )
         assert major in TEXT_MAJORS
         self._match_or_builtin(record, frame.matching)
+
+    def _allowed_in(self, frame: Frame, record: Record) -> None:
+        """An LCS macro issues no motion and none of the commands §5.8 lists."""
+        if frame.macro.kind is not Kind.LCS:
+            return
+        if isinstance(record, Statement):
+            refused = record.major in LCS_REFUSED
+        else:
+            refused = not isinstance(record, Comment | PartText)
+        if refused:
+            name = record.major if isinstance(record, Statement) else type(record).__name__
+            raise MacroError(f"an LCS macro may not issue {name} (§5.8)")
 
     def _commands_allowed(self, frame: Frame) -> None:
         if frame.macro.kind in NO_COMMANDS:
@@ -250,39 +264,56 @@ class MacroEngine:
         ``then`` whether the shutdown does after the action."""
         startup = self.table.event(kind, Phase.STARTUP)
         shutdown = self.table.event(kind, Phase.SHUTDOWN)
+        event = _EVENT.get(kind, kind)  # a first tool change is a tool change (no re-entry)
         if (
             (startup is None and shutdown is None)
-            or kind in self._running
+            or event in self._running
             or not self.enabled(kind)
         ):
             builtin()
             return
         shared: dict[str, Any] = {}
         done = False
+        named = startup or shutdown
+        assert named is not None
+
+        def judged(rule: Callable[[PParams], bool] | None) -> bool:
+            """A rule on the $P the startup macro left; a value it may not take is the
+            macro's error, named."""
+            if rule is None:
+                return True
+            try:
+                return rule(params)
+            except MacroError as error:
+                raise MacroFailure(f"macro {named.key}: {error}", self._where_of(record)) from None
 
         def once(frame: Frame) -> None:
             nonlocal done
-            if proceed is not None and not proceed(params):
+            if not judged(proceed):
                 return
             if not done:
                 done = True
                 builtin()
 
-        self._running.add(kind)
+        self._running.add(event)
         try:
             if startup is not None:
                 frame = Frame(startup, params, record, shared, on_output=once)
                 self._run(frame)
-            if proceed is not None and not proceed(params):
+            if not judged(proceed):
                 return
             if not done:
                 done = True
                 builtin()
-            if shutdown is not None and (then is None or then(params)):
+            if shutdown is not None and judged(then):
                 local = {} if kind is Kind.MACHINE else shared  # §4.2: machine keeps none
                 self._run(Frame(shutdown, params, record, local))
         finally:
-            self._running.discard(kind)
+            self._running.discard(event)
+
+    def _where_of(self, record: Record | None) -> Any:
+        record = record or self.run.current_record
+        return None if record is None else record.where
 
     def single(
         self,
@@ -351,7 +382,13 @@ class MacroEngine:
         if self.looking is not None:
             return None
         self._may_look(frame, "look ahead")
-        search = ToolSearch() if kind == "tool" else MotionSearch()
+        if kind == "tool":
+            search: Search = ToolSearch()
+        else:
+            # read in a motion startup macro, the current move is not made yet: an
+            # incremental next move counts from its end
+            before = frame.macro.kind is Kind.MOTION and frame.macro.phase is Phase.STARTUP
+            search = MotionSearch(tuple(frame.params[3][:3]) if before else None)
         result, _ = look_ahead(self.run, search)
         frame.looked[kind] = result
         return result
@@ -447,6 +484,37 @@ def _no_output(frame: Frame) -> None:
 MAX_FLOOK = 5
 
 
+_EVENT = {Kind.FIRST_TOOL_CHANGE: Kind.TOOL_CHANGE}
+# what an LCS macro may not issue besides motion (002 L779-793; MOVETO and CLAMP are allowed)
+LCS_REFUSED = frozenset(
+    [
+        "APPLY",
+        "BREAK",
+        "CYCLE",
+        "END",
+        "OPTYPE",
+        "REWIND",
+        "CALSUB",
+        "COPY",
+        "DEFSUB",
+        "ENDSUB",
+        "INDEX",
+        "COUPLE",
+        "HEAD",
+        "THREAD",
+        "LOAD",
+        "LOADTL",
+        "SELECT",
+        "SELCTL",
+        "TLNAME",
+        "TOOLNO",
+        "TURRET",
+        "UNLOAD",
+        "FINI",
+        "MULTAX",
+        "UNITS",
+    ]
+)
 _SWITCH = {
     Kind.CYCLE: "CYCMAC",
     Kind.MOTION: "MTNMAC",

@@ -66,13 +66,13 @@ class EventHooks:
             output.emit = self.tape
         if table.has(Kind.REGISTER):
             output.register_hook = self.register
-        if HookPoint.SLIDE_LIMITS in table.macfuns:
+        if HookPoint.SLIDE_LIMITS in self.engine.macfuns:
             output.slide_limits.hook = self.slide_limits
 
     def macfun(self, hook: HookPoint, **fields: Any) -> bool:
         """The machine's MACFUN at a hook point: True when it did the special sequence
         (RETURN = 1), so the caller skips the rest."""
-        handler = self.engine.table.macfuns.get(hook)
+        handler = self.engine.macfuns.get(hook)
         if handler is None:
             return False
         run = self.run
@@ -106,33 +106,51 @@ class EventHooks:
         run = self.run
         if engine.search is not None:
             engine.search.motion(run, record)
-        if not engine.table.has(Kind.MOTION):
+        if (
+            not engine.table.has(Kind.MOTION)
+            or Kind.MOTION in engine._running  # a motion macro's own move (§4.2 rule 3)
+            or not engine.enabled(Kind.MOTION)
+        ):
             self._motion_builtin(record)
             return
         params = self._motion_params(record)
-        entry = params.subclass
+        circle = run._circle
+        pending = circle.centre if params.subclass == 1.0 and circle is not None else None
+        start = tuple(run.state.position.present_part[:3])
+        if circle is not None and pending is not None:
+            circle.centre = None  # the startup macro's own moves are not this arc
+
+        def goes(p: Any) -> bool:
+            subclass = p.subclass
+            if subclass in (9.0, 10.0):
+                raise MacroError("a motion's $P1 cannot become a spline (9) or a pattern (10)")
+            if circle is not None and pending is not None:
+                # the arc stays an arc unless suppressed, made simple, or moved away from
+                # by the startup macro's own motions (§5.7)
+                moved = tuple(run.state.position.present_part[:3]) != start
+                circle.centre = pending if subclass == 1.0 and not moved else None
+            return bool(subclass != 0)
 
         def builtin() -> None:
-            if params.subclass != entry and entry == 1.0:
-                run.circle.centre = None  # the arc goes as a move to its end point
             if 19 in params.changed:
                 raise NotYetSupported("a motion macro's changed helical component ($P19)")
             self._motion_builtin(record)
 
-        engine.event(Kind.MOTION, params, record, builtin, proceed=_motion_goes)
+        engine.event(Kind.MOTION, params, record, builtin, proceed=goes)
 
     def _motion_builtin(self, record: Motion) -> None:
         """The post's motion, after the MACFUN FROM test (MCHCON 8) or thread sequence
         (MCHCON 12) where the machine has them."""
         run = self.run
-        if (
-            run.cycle is not None
-            and record.subtype is not MotionSubtype.FROM
-            and run.machine.number_option(1) != 0
-            and self.engine.table.has(Kind.CYCLE)
-        ):
-            raise NotYetSupported("cycle macros on a positioning machine (CYCLGP)", record.where)
-        macfuns = self.engine.table.macfuns
+        if run.cycle is not None and record.subtype is not MotionSubtype.FROM:
+            if run.machine.number_option(1) != 0 and self.engine.table.has(Kind.CYCLE):
+                raise NotYetSupported(
+                    "cycle macros on a positioning machine (CYCLGP)", record.where
+                )
+            if Kind.CYCLE in self.engine._running:
+                self._plain_move(record)  # a cycle macro's own move is no hole (§5.6)
+                return
+        macfuns = self.engine.macfuns
         if macfuns:
             hook = None
             if record.subtype is MotionSubtype.FROM:
@@ -146,6 +164,17 @@ class EventHooks:
                 if self.macfun(hook, record=record, point=cl, machine_point=machine_point):
                     return
         run.motion_builtin(record)
+
+    def _plain_move(self, record: Motion) -> None:
+        run = self.run
+        control = run.control_cycles
+        if control is not None and control.active:
+            control.off(record.number)  # G80 first: the control would drill at the point
+        cycle, run.cycle = run.cycle, None
+        try:
+            run.motion_builtin(record)
+        finally:
+            run.cycle = cycle
 
     def _motion_params(self, record: Motion) -> MotionParams:
         run = self.run
@@ -249,13 +278,23 @@ class EventHooks:
             params.set(number, value)
 
         def emit(frame: Frame) -> None:
+            numbered(params)
             params.changed.clear()
             run.warn_builtin(Diagnostic(str(params.message), diagnostic.where))
+
+        def numbered(params: DiagnosticParams) -> None:
+            if params.changed & {2, 3}:
+                raise NotYetSupported(
+                    "a diagnostic macro's changed number or severity ($P2, $P3): gecent's "
+                    "diagnostics have no numbers yet",
+                    diagnostic.where,
+                )
 
         frame = engine.single(Kind.DIAGNOSTIC, params, run.current_record, emit)
         if frame is None:
             run.warn_builtin(diagnostic)
             return
+        numbered(params)
         if params.flag != 0 and (frame.outputs == 0 or params.changed):
             run.warn_builtin(Diagnostic(str(params.message), diagnostic.where))
 
@@ -348,13 +387,6 @@ def _cycle_output(params: Any) -> bool:
     return bool(params.control in (1, 2))
 
 
-def _motion_goes(params: Any) -> bool:
-    subclass = params.subclass
-    if subclass in (9.0, 10.0):
-        raise MacroError("a motion's $P1 cannot become a spline (9) or a pattern (10)")
-    return bool(subclass != 0)
-
-
 def _tape_block(params: TapeParams, line: str, flag: float) -> None:
     params.set(1, flag)
     params.set(2, 1.0)
@@ -411,5 +443,5 @@ def _word(params: RegisterParams) -> RegisterWord:
 CYCLE_TYPES = {"DRILL": 1.0, "FACE": 2.0, "TAP": 3.0, "BORE": 5.0, "DEEP": 11.0, "THRU": 13.0,
                "MILL": 1.0}  # fmt: skip
 # the output switches of §5.6 whose effect is not built (a change stops the run, named)
-CYCLE_SWITCHES = {8: "feed", 10: "clearance plane", 12: "depth", 14: "retract plane",
-                  20: "back-bore plane", 21: "back-bore plane"}  # fmt: skip
+CYCLE_SWITCHES = {5: "activation", 8: "feed", 10: "clearance plane", 12: "depth",
+                  14: "retract plane", 20: "back-bore plane", 21: "back-bore plane"}  # fmt: skip

@@ -25,7 +25,7 @@ from gecent.core.cl.records import MotionSubtype, Record
 from gecent.core.errors import GecentError
 from gecent.core.macros.context import LookaheadFlags
 from gecent.core.macros.host import MacroHost
-from gecent.core.macros.model import Found, Kind
+from gecent.core.macros.model import Found, Kind, MacroFailure
 from gecent.core.macros.operations import OperationSink
 from gecent.core.macros.searches import Search
 from gecent.core.output.sinks import Sinks
@@ -41,12 +41,18 @@ def snapshot(run: MacroHost) -> MacroHost:
     memo: dict[int, Any] = {
         id(run.sinks): Sinks([]),
         id(run.result.blocks): [],
+        id(run.result.diagnostics): [],  # (the copy's warnings go nowhere)
         id(run.plugins): run.plugins,
         id(run.machine): run.machine,
         id(engine.table): engine.table,
         id(engine.records): engine.records,
         id(run.report): None,
     }
+    for value in engine.globals.values():  # a file a macro keeps open is shared, not copied
+        try:
+            copy.deepcopy(value, {})
+        except Exception:  # (deepcopy of an open file, a module, a lock... fails)
+            memo[id(value)] = value
     clone = copy.deepcopy(run, memo)
     clone.report = _silent
     clone._fast = None  # type: ignore[attr-defined]
@@ -102,6 +108,8 @@ def look_ahead(run: MacroHost, search: Search, start: int = 0) -> tuple[Any, Any
         clone.end_of_input()
     except Found as found:
         return found.value, look
+    except MacroFailure:
+        raise  # a macro's own error, even one only a look-ahead runs into, is reported
     except GecentError:
-        pass
+        pass  # bad input further on: the real run meets it in its turn
     return search.fini(clone), look

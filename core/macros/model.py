@@ -69,12 +69,14 @@ class MacroFailure(InputError):
     message names the macro; the position is the record it was working on."""
 
 
-class TerminateMacro(Exception):
-    """TERMAC: leave the current macro (caught by the engine)."""
+class TerminateMacro(BaseException):
+    """TERMAC: leave the current macro (caught by the engine). A BaseException, so a
+    macro's own ``except Exception`` cannot swallow it."""
 
 
-class Found(Exception):
-    """A look-ahead found what it searched for (raised inside a snapshot run)."""
+class Found(BaseException):
+    """A look-ahead found what it searched for (raised inside a snapshot run). A
+    BaseException, so a macro's own ``except Exception`` cannot swallow it."""
 
     def __init__(self, value: Any) -> None:
         super().__init__()

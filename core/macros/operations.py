@@ -16,6 +16,7 @@ from typing import TYPE_CHECKING, Any
 
 from gecent.core.absent import ABSENT
 from gecent.core.macros.model import MacroError
+from gecent.core.output.block import Code
 
 if TYPE_CHECKING:
     from gecent.core.output.block import Block
@@ -142,6 +143,9 @@ class Operations:
                 self.tab.put(START_N, row, float(sequence))
             self.tab.put(END_N, row, float(sequence))
         self.tab.put(END_TIME, row, self._minutes * 60.0)
+        if block.code is Code.COMMENT:  # a diagnostic (gecent's are warnings: severity 1)
+            self.tab.put(SEVERITY, row, 1.0)
+            return
         seconds = block.cut_minutes * 60.0
         summary = self.sum.rows[row - 1]
         summary[(POSITION_TIME if block.rapid else FEED_TIME) - 1] += seconds
@@ -164,12 +168,6 @@ class Operations:
             low_speed = summary[SPEED_MIN - 1]
             summary[SPEED_MIN - 1] = speed if low_speed == 0.0 else min(low_speed, speed)
             summary[SPEED_MAX - 1] = max(summary[SPEED_MAX - 1], speed)
-
-    def warned(self) -> None:
-        """A diagnostic in the current operation: column 10 counts the highest severity
-        (gecent's diagnostics are all warnings, severity 1)."""
-        if not self.full:
-            self.tab.put(SEVERITY, self.oi, 1.0)
 
 
 class OperationSink:

@@ -44,6 +44,8 @@ class PParams:
             raise AttributeError(f"{self.KIND} macros have no parameter {name!r}") from None
 
     def _field(self, number: int) -> P:
+        if not isinstance(number, int):
+            raise MacroError(f"the {self.KIND} macro has no parameter {number!r}")
         field = self.FIELDS.get(number)
         if field is None:
             raise MacroError(f"$P{number} is not a parameter of the {self.KIND} macro")

@@ -35,14 +35,18 @@ OPTYPE_FIRST, FINI_FIRST = -1.0, -2.0
 OPTYPE_WORDS = {"TOOL": TOOL, "MILL": MILL, "TURN": TURN, "AXIAL": AXIAL}
 
 
-def next_motion(run: MacroHost, record: Motion) -> NextMotion:
-    """Where a motion record ends (its last point), machine and CL values (§7.2)."""
+def next_motion(
+    run: MacroHost, record: Motion, base: tuple[float, ...] | None = None
+) -> NextMotion:
+    """Where a motion record ends (its last point), machine and CL values (§7.2); an
+    incremental move counts from ``base`` when given (the end of a move not yet made)."""
     position = run.state.position
     translation = position.translation
     last = record.points[-1]
     if record.subtype is MotionSubtype.GODLTA:
         delta = last if len(last) == 3 else (0.0, 0.0, last[0])
-        machine = tuple(position.previous_part[a] + delta[a] for a in range(3))
+        start = base if base is not None else position.previous_part
+        machine = tuple(start[a] + delta[a] for a in range(3))
     else:
         machine = tuple(last[a] + translation[a] for a in range(3))
     cl = tuple(machine[a] - translation[a] for a in range(3))
@@ -185,8 +189,11 @@ class ToolSearch(Search):
 class MotionSearch(Search):
     kind = "motion"
 
+    def __init__(self, base: tuple[float, ...] | None = None) -> None:
+        self.base = base  # where the current move ends, when the search starts before it
+
     def motion(self, run: MacroHost, record: Motion) -> None:
-        raise Found(next_motion(run, record))
+        raise Found(next_motion(run, record, self.base))
 
     def fini(self, run: MacroHost) -> Any:
         return current_motion(run)

@@ -128,7 +128,15 @@ def trans(run: MacroHost, statement: Statement) -> None:
                                0.0, 0.0, 1.0, translation[2])),
                           (5, 0.0), (9, translation), (21, 0.0)):  # fmt: skip
         params.set(number, value)
-    engine.event(Kind.LCS, params, statement, lambda: original(run, statement))
+
+    def builtin() -> None:
+        if 21 in params.changed:
+            raise NotYetSupported(
+                "an LCS macro's motion ($P21): TRANS moves nothing", statement.where
+            )
+        original(run, statement)
+
+    engine.event(Kind.LCS, params, statement, builtin)
 
 
 def break_(run: MacroHost, statement: Statement) -> None:
