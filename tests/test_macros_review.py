@@ -200,3 +200,86 @@ def test_a_macros_except_exception_cannot_swallow_terminate_or_a_look_ahead() ->
 
     post(HEAD + "LOADTL/1\nLOADTL/2\nFINI\n", macros)
     assert seen == [2.0, None]
+
+
+def test_tool_change_params_from_the_statements_words() -> None:
+    """$P7-$P17 come from words gecent's own LOADTL does not take (a vendor's form a user
+    macro passes on, say); the params read them all."""
+    from gecent.core.macros.statement_hooks import _tool_params
+
+    from .macros_helpers import record
+
+    statement = record("LOADTL/3,LARGE,DIAMET,12,TIMES,2,SETOOL,1,2,3,ATANGL,45")
+    params = _tool_params(statement)  # type: ignore[arg-type]
+    assert {n: params[n] for n in (7, 8, 9, 11, 12, 13, 14, 15, 16)} == {
+        7: 2.0, 8: None, 9: 3.0, 11: 12.0, 12: 2.0, 13: 1.0, 14: 2.0, 15: 3.0, 16: 45.0
+    }  # fmt: skip
+
+
+def test_a_cycle_with_a_dwell_has_its_own_type() -> None:
+    types: list[float] = []
+    macros = Macros()
+
+    @macros.event(Kind.CYCLE, Phase.STARTUP)
+    def before(ctx):  # type: ignore[no-untyped-def]
+        types.append(ctx.p.cycle_type)
+
+    post(HEAD + "CYCLE/BORE,DEPTH,5,CLEAR,2,DWELL,1,MMPM,50\nGOTO/10,0,0\nCYCLE/OFF\nFINI\n",
+         macros)  # fmt: skip
+    assert types == [6.0]  # BORE with dwell
+
+
+def test_ilook_false_ends_finfo_where_the_macro_is() -> None:
+    found: list[float] = []
+    macros = Macros()
+
+    @macros.event(Kind.MACHINE, Phase.STARTUP)
+    def start(ctx):  # type: ignore[no-untyped-def]
+        found.append(ctx.finfo(0, 0))
+
+    @macros.syntax("STOP")
+    def stop(ctx):  # type: ignore[no-untyped-def]
+        if ctx.la.active:
+            ctx.sv.ILOOK = False
+        ctx.output()
+
+    post(HEAD + "GOTO/1,0,0\nSTOP\nGOTO/2,0,0\nFINI\n", macros)
+    assert found == [6.0]  # the STOP's record, not FINI's -2
+
+
+def test_look_ahead_values_reset_when_another_macro_runs() -> None:
+    searches: list[int] = []
+    macros = Macros()
+
+    @macros.event(Kind.TOOL_CHANGE, Phase.STARTUP)
+    def before(ctx):  # type: ignore[no-untyped-def]
+        _ = ctx.next.tool
+        ctx.cmd("STOP")  # a user macro runs: the value is gone (§7.3)
+        _ = ctx.next.tool
+
+    @macros.syntax("GOTO")
+    def move(ctx):  # type: ignore[no-untyped-def]
+        if ctx.la.active:
+            searches.append(1)
+        ctx.output()
+
+    @macros.syntax("STOP")
+    def stop(ctx):  # type: ignore[no-untyped-def]
+        ctx.output()
+
+    post(HEAD + "LOADTL/1\nGOTO/1,0,0\nLOADTL/2\nFINI\n", macros)
+    assert len(searches) == 2  # two searches at tool 1 (each met the GOTO), none after
+
+
+def test_ppfun_23_resets_a_rows_travel() -> None:
+    rows: list[object] = []
+    macros = Macros()
+
+    @macros.event(Kind.TOOL_CHANGE, Phase.STARTUP)
+    def before(ctx):  # type: ignore[no-untyped-def]
+        if ctx.p.tool_id == 2:
+            ctx.ops.reset_travel(1)
+            rows.append((ctx.ops.max[1, 1], ctx.ops.min[3, 1]))
+
+    post(HEAD + "LOADTL/1\nGOTO/5,0,0\nLOADTL/2\nFINI\n", macros)
+    assert rows == [(None, None)]

@@ -64,6 +64,7 @@ class Engine(Protocol):
 
     flook_stack: tuple[int, ...]
     operations: Any
+    search: Any
 
     def gathered(self, kind: str) -> Any: ...
 

@@ -165,6 +165,8 @@ class MacroEngine:
             )
         body = frame.macro.body
         assert body is not None
+        if self.frames:
+            self.frames[-1].looked.clear()  # look-ahead values last within one activation
         self.frames.append(frame)
         try:
             body(MacroContext(self, frame))
@@ -181,6 +183,8 @@ class MacroEngine:
             ) from error
         finally:
             self.frames.pop()
+            if self.frames:
+                self.frames[-1].looked.clear()  # (§7.3: reset on any macro's entry and exit)
 
     def _where(self, frame: Frame) -> Any:
         record = frame.record or self.run.current_record

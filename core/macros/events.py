@@ -238,7 +238,7 @@ class EventHooks:
         params = CycleParams()
         values: tuple[tuple[int, Any], ...] = (
             (1, 1.0), (2, hole), (3, (*(hole[a] + translation[a] for a in range(3)), 0.0, 0.0,
-            0.0)), (4, CYCLE_TYPES.get(cycle.kind, 1.0)), (5, not control.active), (6, 0),
+            0.0)), (4, cycle_type(cycle.kind, bool(cycle.dwell))), (5, not control.active), (6, 0),
             (8, True), (9, run.state.feed.ipm), (10, True), (11, plane), (12, True),
             (13, bottom), (14, True), (15, back), (16, 1 if cycle.step else 0),
             (17, (cycle.step,) if cycle.step else ()), (18, 0), (19, 3.0), (20, False),
@@ -439,9 +439,18 @@ def _word(params: RegisterParams) -> RegisterWord:
     return (int(_slot(params.index)), "", text, text)
 
 
-# the cycle types of $P4 (§5.6) for gecent's cycle words
-CYCLE_TYPES = {"DRILL": 1.0, "FACE": 2.0, "TAP": 3.0, "BORE": 5.0, "DEEP": 11.0, "THRU": 13.0,
-               "MILL": 1.0}  # fmt: skip
+# the cycle types of $P4 (§5.6) for gecent's cycle words, without and with a dwell
+CYCLE_TYPES = {"DRILL": (1.0, 2.0), "FACE": (2.0, 2.0), "TAP": (3.0, 3.0), "BORE": (5.0, 6.0),
+               "DEEP": (11.0, 11.0), "THRU": (13.0, 13.0), "MILL": (1.0, 2.0)}  # fmt: skip
+
+
+def cycle_type(kind: str, dwell: bool) -> float:
+    """$P4: DRILL 1 (with a dwell 2, as FACE), TAP 3, BORE 5 (6 with a dwell), DEEP 11,
+    THRU 13; gecent's stand-ins (CSINK, REAM, BRKCHP) arrive as DRILL, BORE, DEEP."""
+    plain, dwelling = CYCLE_TYPES.get(kind, (1.0, 2.0))
+    return dwelling if dwell else plain
+
+
 # the output switches of §5.6 whose effect is not built (a change stops the run, named)
 CYCLE_SWITCHES = {5: "activation", 8: "feed", 10: "clearance plane", 12: "depth",
                   14: "retract plane", 20: "back-bore plane", 21: "back-bore plane"}  # fmt: skip

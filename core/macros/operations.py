@@ -111,6 +111,12 @@ class Operations:
         if self.foi == 0:
             self.foi = row
 
+    def reset_travel(self, row: int) -> None:
+        """PPFUN/23,OP,row: the row's travel back to None (003 L12-31)."""
+        self.max._cell((1, row))
+        for table in (self.max, self.min):
+            table.rows[row - 1] = [None] * table.columns
+
     def tool_change(self, tool: float | None) -> None:
         """A new operation at every tool change; $FOI starts again (003 L3-5)."""
         self._tool = tool

@@ -160,6 +160,9 @@ class Gathered:
 class Search:
     """A look-ahead; the default reactions do nothing."""
 
+    def stop(self, run: MacroHost) -> None:
+        """Ended by a macro (only the operation searches can be)."""
+
     kind = ""
     context = 0
 
@@ -253,6 +256,8 @@ class OperationSearch(Search):
             return
         info = self.info
         cutting = _cutting(run, record)
+        if run.state.threading.armed:
+            info.ISIT = True
         if not info.P1.CLN:
             info.P1 = key_motion(run, record, start=False)
         if run.cycle is not None:
@@ -285,6 +290,12 @@ class OperationSearch(Search):
 
     def fini(self, run: MacroHost) -> Any:
         return self.result(FINI_FIRST)
+
+    def stop(self, run: MacroHost) -> None:
+        """$ILOOK or $OELOOK set false in a macro: the search ends here (§7.8, §7.9)."""
+        if self.kind == "oe":
+            self._done(AXIAL if run.cycle is not None else TURN if self.turning else MILL)
+        self._done(self.last)
 
 
 class FlookSearch(Search):

@@ -61,9 +61,29 @@ def _tool_params(statement: Statement) -> ToolChangeParams:
     params.set(4, 1.0 if "CLW" in words else 2.0 if "CCLW" in words else None)
     params.set(5, _after(args, "OFSETL"))
     params.set(6, _after(args, "LENGTH"))
+    params.set(7, 2.0 if "LARGE" in words else 1.0 if "SMALL" in words else None)
+    params.set(8, 1.0 if "START" in words else None)
     params.set(9, tool)
+    params.set(10, _after(args, "RETAIN"))
+    params.set(11, _after(args, "DIAMET"))
+    params.set(12, _after(args, "TIMES"))
+    setool = _after_three(args, "SETOOL")
+    for number, value in zip((13, 14, 15), setool, strict=True):
+        params.set(number, value)
+    params.set(16, _after(args, "ATANGL"))
+    params.set(17, _after(args, "SETANG"))
     params.set(18, 2.0 if "REAR" in words else 1.0 if "FRONT" in words else None)
+    params.set(19, 2.0 if "MILL" in words else 1.0 if "TURN" in words else None)
     return params
+
+
+def _after_three(args: tuple[Any, ...], name: str) -> tuple[float | None, ...]:
+    """SETOOL, x, y, z: the three values after the word (None where absent)."""
+    for index, arg in enumerate(args):
+        if isinstance(arg, Word) and arg.name == name:
+            values = [a for a in args[index + 1 : index + 4] if not isinstance(a, Word)]
+            return tuple([float(v) for v in values] + [None] * (3 - len(values)))
+    return (None, None, None)
 
 
 def _after(args: tuple[Any, ...], name: str) -> float | None:

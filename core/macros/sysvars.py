@@ -107,6 +107,11 @@ class SystemVariables:
             # X20: a motion code INSERTed by hand; the next move states its G again
             self._engine.run.output.words.previous_g = ABSENT
             return
+        if key in ("ILOOK", "OELOOK") and not value:
+            search = self._engine.search  # a macro ends the $FINFO or OPTYPE look-ahead
+            if search is not None and search.kind == ("finfo" if key == "ILOOK" else "oe"):
+                search.stop(self._engine.run)
+            return
         if key in COMPUTED:
             raise MacroError(f"${key} is read-only")
         if key in LINKED:
