@@ -90,10 +90,10 @@ class UnitScale:
                 record.subscript,
                 offset=record.offset,
             )
-        if isinstance(record, Circle) and len(record.values) >= 7:
+        if isinstance(record, Circle) and len(record.values) >= 6:
             v = record.values
-            values = (v[0] * factor, v[1] * factor, v[2] * factor, v[3], v[4], v[5],
-                      v[6] * factor, *v[7:])  # fmt: skip
+            radius = (v[6] * factor,) if len(v) > 6 else ()  # (6 values: no radius)
+            values = (v[0] * factor, v[1] * factor, v[2] * factor, v[3], v[4], v[5], *radius)
             return replace(record, values=values)
         if isinstance(record, Arelem) and record.subtype in _ARELEM_LENGTHS:
             return replace(record, values=tuple(v * factor for v in record.values))

@@ -8,7 +8,8 @@ Rules (decisions with seed lines in docs/decisions.md):
   single ``$`` continues on the next line (Creo writes multi-line ``$$->`` comments so);
 * PARTNO, PPRINT and INSERT keep the rest of the line verbatim (a leading ``/`` dropped);
 * FROM/GOTO take 3 values (6 after MULTAX/ON), GODLTA 1 or 3; CIRCLE takes the canonical
-  7 values xc, yc, zc, i, j, k, r; INTOL, OUTTOL and CUTTER become type-6000 records and
+  7 values xc, yc, zc, i, j, k, r, or 6 (no radius) or 11 (NX: the 7 and four more, dropped);
+  a word may begin with digits (SolidWorks CAM's 1STPECK); INTOL, OUTTOL and CUTTER become type-6000 records and
   MULTAX a type-9000 record, as an APT processor writes them.
 
 The reader is a generator: memory does not grow with the file.
@@ -49,7 +50,7 @@ _ARELEM_FLAGS = {
 }
 _TOKEN = re.compile(
     r"\s*(?:(?P<number>[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?)(?![A-Za-z0-9_])"
-    r"|(?P<word>[A-Za-z][A-Za-z0-9_]*)|(?P<comma>,)|(?P<end>$))",
+    r"|(?P<word>[0-9]*[A-Za-z][A-Za-z0-9_]*)|(?P<comma>,)|(?P<end>$))",
     re.ASCII,  # blanks are ASCII blanks: float() takes no other (a \x1c is an error)
 )
 _NUMBER_ITEM = r"\s*[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?\s*"
@@ -259,7 +260,10 @@ class AptSourceReader:
             values = self._numbers(logical, major, args, counts)
             return Motion(file, line, number, subtype, (values,))
         if major == "CIRCLE":
-            return Circle(file, line, number, self._numbers(logical, major, args, (7,)))
+            # 7 values (centre, axis, radius); 6 without the radius (SolidWorks CAM: it comes
+            # from the points); 11 with NX's tolerance and tool data after the radius
+            values = self._numbers(logical, major, args, (6, 7, 11))
+            return Circle(file, line, number, values[:7])
         if major == "FINI":
             return Fini(file, line, number)
         if major in _ARELEM_FLAGS:

@@ -143,7 +143,7 @@ class _Reader:
             if isinstance(record, Motion):
                 self._motion(record)
             elif isinstance(record, Circle):
-                self.circle = record if self.circles and len(record.values) >= 7 else None
+                self.circle = record if self.circles and len(record.values) >= 6 else None
             elif isinstance(record, Statement):
                 self._statement(record)
             elif isinstance(record, Arelem) and record.subtype in (4, 5) and record.values:
