@@ -32,6 +32,7 @@ from gecent.core.errors import (
 )
 from gecent.core.families import FAMILIES, MachinePack
 from gecent.core.machine.definition import MachineDefinition
+from gecent.core.macros.dialect import choose_dialect, in_dialect
 from gecent.core.macros.files import load_macro_file
 from gecent.core.macros.table import with_macros
 from gecent.core.motion.guard import DEFAULT_MAX_SEGMENTS
@@ -76,6 +77,12 @@ def _reporting_errors(function: F) -> F:
             sys.exit(EXIT_INTERNAL)
 
     return wrapper  # type: ignore[return-value]
+
+
+_DIALECT_HELP = (
+    "The CAM system's dialect the CL file is written in (--list-plugins shows them; none: "
+    "plain APT); default: detected from the file."
+)
 
 
 def _plugins() -> PluginSet:
@@ -247,6 +254,7 @@ def machine_show(key: str, show_all: bool, as_json: bool) -> None:
     show_default=True,
     help="Most segment blocks one CL move may make (0: no bound); a longer move is refused.",
 )
+@click.option("--dialect", metavar="NAME", help=_DIALECT_HELP)
 @click.option(
     "--macros",
     "macro_files",
@@ -270,6 +278,7 @@ def post(
     punch_to: tuple[str, str] | None,
     as_json: bool,
     max_segments: int,
+    dialect: str | None,
     macro_files: tuple[str, ...],
     general_path: bool,
 ) -> None:
@@ -313,6 +322,7 @@ def post(
                 report,
                 max_segments,
                 fast=not general_path,
+                dialect=dialect,
             )
         except GecentError as exc:  # standard input is named "-", not its spool
             where = getattr(exc, "where", None)
@@ -401,6 +411,7 @@ def _layout(name: str | None) -> Layout | None:
     type=click.Path(dir_okay=False),
     help="Output file (default: standard output; required with --to).",
 )
+@click.option("--dialect", metavar="NAME", help=_DIALECT_HELP)
 @_reporting_errors
 def cl_command(
     input_path: str,
@@ -408,11 +419,21 @@ def cl_command(
     in_layout: str | None,
     out_layout: str | None,
     output_path: str | None,
+    dialect: str | None,
 ) -> None:
-    """Print the records of a CL file (text or binary), or convert it to binary."""
+    """Print the records of a CL file (text or binary) as the post reads them (through
+    its CAM dialect, which is named first), or convert it to binary."""
     from gecent.core.cl.binary_writer import write_binary
 
-    records = read_cl(input_path, _plugins(), _layout(in_layout))
+    plugins = _plugins()
+    spoken = choose_dialect(input_path, plugins, dialect)
+    records = in_dialect(read_cl(input_path, plugins, _layout(in_layout)), spoken, None)
+    heading = None
+    if spoken is not None:
+        how = "given" if dialect else "detected"
+        heading = f"DIALECT {spoken.name} ({spoken.title}), {how}"
+        if as_json or out_layout is not None:
+            click.echo(heading, err=True)
     if out_layout is not None:
         layout = _layout(out_layout)
         assert layout is not None
@@ -424,19 +445,23 @@ def cl_command(
         return
     if output_path is not None:
         lines = io.StringIO()
-        _print_records(records, as_json, lines.write)
+        _print_records(records, as_json, lines.write, heading)
         write_atomically(output_path, lines.getvalue().encode("utf-8"))
         return
-    _print_records(records, as_json, sys.stdout.write)
+    _print_records(records, as_json, sys.stdout.write, heading)
 
 
-def _print_records(records: Iterable[Record], as_json: bool, write: Callable[[str], Any]) -> None:
+def _print_records(
+    records: Iterable[Record], as_json: bool, write: Callable[[str], Any], heading: str | None
+) -> None:
     from gecent.core.cl.clprint import clprint_lines, record_json
 
     if as_json:
         for record in records:
             write(json.dumps(record_json(record)) + "\n")
         return
+    if heading is not None:
+        write(heading + "\n")
     write("TAPENO/  ISN\n")
     for record in records:
         for line in clprint_lines(record):
@@ -469,15 +494,18 @@ if __name__ == "__main__":  # pragma: no cover
     show_default=True,
     help="Largest deviation allowed, in millimetres.",
 )
+@click.option("--dialect", metavar="NAME", help=_DIALECT_HELP)
 @_reporting_errors
-def verify_command(tape_path: str, cl_file: str, machine_key: str | None, tolerance: float) -> None:
+def verify_command(
+    tape_path: str, cl_file: str, machine_key: str | None, tolerance: float, dialect: str | None
+) -> None:
     """Read TAPE with LinuxCNC's rs274 and compare its tool path with the CL path: exit 0 when
     every CL point is reached in order, 1 at the first mismatch (docs/verify.md)."""
     from gecent.core.verify.check import verify
 
     plugins = _plugins()
     override = _override(plugins, machine_key)
-    result = verify(tape_path, cl_file, plugins, override, tolerance)
+    result = verify(tape_path, cl_file, plugins, override, tolerance, dialect)
     for line in result.report():
         click.echo(line)
     sys.exit(0 if result.passed else 1)

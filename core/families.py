@@ -14,6 +14,7 @@ printouts                 register_printouts         option 164
 MACFUN                    register_macfuns           option 133 and the machine
 CL readers                register_cl_readers        the input file's content
 macros                    register_macros            the machine (spec 09)
+dialects                  register_dialects          the CL file's CAM system, or --dialect
 ========================  =========================  ===========================
 """
 
@@ -71,6 +72,7 @@ FAMILIES: tuple[FamilySpec, ...] = (
     FamilySpec("macfuns", "register_macfuns", "name"),
     FamilySpec("readers", "register_cl_readers", "name"),
     FamilySpec("macros", "register_macros", "key"),
+    FamilySpec("dialects", "register_dialects", "name"),
 )
 FAMILY_BY_NAME = {family.name: family for family in FAMILIES}
 

@@ -71,3 +71,8 @@ def register_cl_readers(register: Register) -> None:
 @hookspec
 def register_macros(register: Register) -> None:
     """Register macros: event and user-defined (:class:`gecent.core.macros.model.Macro`)."""
+
+
+@hookspec
+def register_dialects(register: Register) -> None:
+    """Register CAM dialects (:class:`gecent.core.macros.dialect.Dialect`)."""

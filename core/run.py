@@ -16,6 +16,7 @@ from gecent.core.cl.records import (
     Fini,
     Motion,
     MotionSubtype,
+    Multiax,
     Other,
     PartText,
     Record,
@@ -56,6 +57,7 @@ from gecent.core.motion.linear import LinearMotion, godlta_delta, path_length
 from gecent.core.motion.positioning import PositioningMotion
 from gecent.core.motion.rotary import RotaryElement
 from gecent.core.motion.thread import ThreadElement
+from gecent.core.motion.tool_axis import three_axis_motion
 from gecent.core.output.block import Block, Code
 from gecent.core.output.element import OutputElement
 from gecent.core.output.format import FormatOverflow
@@ -352,6 +354,10 @@ class Run(Elements):
             self.finished = True
         elif isinstance(record, Comment | PartText | Surface | Other):
             return
+        elif isinstance(record, Multiax):
+            if self.machine.number_option(116) != 0:
+                raise NotYetSupported("MULTAX on a multiaxis machine", record.where)
+            return  # each point's tool axis is checked with its motion
         else:
             kind = type(record).__name__.upper()
             raise NotYetSupported(
@@ -391,7 +397,7 @@ class Run(Elements):
             raise NotYetSupported(f"motion with option 1 = {control:g}", record.where)
         positioning = control != 0
         if len(record.points[0]) == 6:
-            raise NotYetSupported("multiaxis motion", record.where)
+            record = three_axis_motion(record, self.machine)  # (or an error naming the line)
         modes = self.state.modes
         if modes.ended:
             modes.ended = False

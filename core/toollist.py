@@ -19,6 +19,7 @@ from gecent.core.cl.records import Arelem, Motion, Record, Statement, Word
 from gecent.core.cl.stream import read_cl
 from gecent.core.errors import InputError
 from gecent.core.machine.definition import MachineDefinition
+from gecent.core.macros.dialect import Dialect, read_in_dialect
 from gecent.core.plugins import PluginSet
 from gecent.core.units import UnitScale
 
@@ -45,10 +46,19 @@ class ListedTool:
         return "(" + ", ".join(parts) + ")"
 
 
-def tool_list(path: str, plugins: PluginSet, machine: MachineDefinition) -> list[str]:
-    """The header comments for the tools the CL file at ``path`` loads."""
+def tool_list(
+    path: str, plugins: PluginSet, machine: MachineDefinition, dialect: Dialect | None = None
+) -> list[str]:
+    """The header comments for the tools the CL file at ``path`` loads; a file in a CAM
+    dialect is read whole, through the dialect (its tool words are its own)."""
     unit = "MM" if machine.number_option(138) == 1 else "IN"
-    return [tool.comment(unit) for tool in listed_tools(_records(path, plugins), machine)]
+    records = (
+        _records(path, plugins) if dialect is None else read_in_dialect(path, plugins, dialect)
+    )
+    try:
+        return [tool.comment(unit) for tool in listed_tools(records, machine)]
+    except InputError:
+        return []  # a malformed statement: the post finds it with its line
 
 
 def listed_tools(records: Iterable[Record], machine: MachineDefinition) -> list[ListedTool]:

@@ -20,14 +20,12 @@ CL_FILES = sorted(
     for path in CORPUS.glob("*/*")
     if path.suffix in (".apt", ".cl3", ".1", ".8")
 )
-# corpus files that do not post yet, and why: APT part programs (geometry, not CL data) and
-# SolidWorks CAM's dialect (issue 19); each is still posted and must fail as bad input (2)
-# or unsupported (3), so a file that starts to post joins the check
+# corpus files that do not post, and why: APT part programs (geometry, not CL data); each is
+# still posted and must fail as bad input (2), so a file that starts to post joins the check
+# (SolidWorks CAM's files post through their dialect since issue 19)
 NOT_POSTING = {
     "apt4/test2_contour_tlrgt.apt": 2,
     "apt4/test2d_finetol.apt": 2,
-    "solidworks-cam/Sacrifice-Board.apt": 3,
-    "solidworks-cam/manufacture3-bottom.apt": 3,
 }
 
 

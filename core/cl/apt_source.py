@@ -9,8 +9,8 @@ Rules (decisions with seed lines in docs/decisions.md):
 * PARTNO, PPRINT and INSERT keep the rest of the line verbatim (a leading ``/`` dropped);
 * FROM/GOTO take 3 values (6 after MULTAX/ON), GODLTA 1 or 3; CIRCLE takes the canonical
   7 values xc, yc, zc, i, j, k, r, or 6 (no radius) or 11 (NX: the 7 and four more, dropped);
-  a word may begin with digits (SolidWorks CAM's 1STPECK); INTOL, OUTTOL and CUTTER become type-6000 records and
-  MULTAX a type-9000 record, as an APT processor writes them.
+  a word may begin with digits (SolidWorks CAM's 1STPECK); INTOL, OUTTOL and CUTTER become
+  type-6000 records and MULTAX a type-9000 record, as an APT processor writes them.
 
 The reader is a generator: memory does not grow with the file.
 """

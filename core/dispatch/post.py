@@ -10,6 +10,7 @@ from gecent.core.cl.stream import read_cl
 from gecent.core.errors import Diagnostic
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.machine.selection import first_machin, resolve_machine
+from gecent.core.macros.dialect import choose_dialect, read_in_dialect
 from gecent.core.motion.guard import DEFAULT_MAX_SEGMENTS
 from gecent.core.output.sinks import Sinks
 from gecent.core.plugins import PluginSet
@@ -27,11 +28,14 @@ def post(
     report: Callable[[Diagnostic], None] | None = None,
     max_segments: int = DEFAULT_MAX_SEGMENTS,
     fast: bool = True,
+    dialect: str | None = None,
 ) -> RunResult:
     """Select the machine (first pass up to MACHIN, as GEINIT does), then process the file;
     ``watch`` may wrap the records of the main pass (a progress bar). ``sinks`` makes the
     outputs for the machine chosen (none: the result keeps the blocks); ``report`` gets
-    each warning as it is made (none: the result keeps them)."""
+    each warning as it is made (none: the result keeps them). ``dialect`` forces the CAM
+    dialect (core/macros/dialect.py; "none" for none), else the file's own is detected."""
+    spoken = choose_dialect(path, plugins, dialect)
     request, notes = first_machin(read_cl(path, plugins))
     machine = resolve_machine(plugins, machine_override, request)
     run = Run(
@@ -43,8 +47,8 @@ def post(
         fast,
     )
     if machine.number_option(264) == 1:
-        run.state.header = tool_list(path, plugins, machine)
+        run.state.header = tool_list(path, plugins, machine, spoken)
     for note in notes:
         run.warn(note)
-    records = read_cl(path, plugins)
+    records = read_in_dialect(path, plugins, spoken, run.warn)
     return run.process(watch(records) if watch is not None else records)

@@ -136,9 +136,15 @@ class Leg:
 
 
 def cycle_legs(
-    cycle: Cycle, at: tuple[float, float, float], hole: tuple[float, float, float], first_z: float
+    cycle: Cycle,
+    at: tuple[float, float, float],
+    hole: tuple[float, float, float],
+    first_z: float,
+    pecks_from_plane: bool = False,
 ) -> list[Leg]:
-    """The moves that drill ``hole`` (x, y, top) from ``at``, in CL units."""
+    """The moves that drill ``hole`` (x, y, top) from ``at``, in CL units. DEEP's pecks
+    count from the hole's top, as the post makes them; ``pecks_from_plane`` counts them from
+    the R plane, as a control's own peck cycle (G83) does."""
     x, y, top = hole
     plane = top + cycle.clearance - cycle.rapto
     bottom = top - cycle.depth
@@ -154,8 +160,9 @@ def cycle_legs(
     legs.append(Leg((x, y, plane), rapid=True))
     if cycle.kind == "DEEP" and cycle.step:
         depth = cycle.step
-        while top - depth > bottom + 1e-9:
-            legs.append(Leg((x, y, top - depth), rapid=False))
+        start = plane if pecks_from_plane else top
+        while start - depth > bottom + 1e-9:
+            legs.append(Leg((x, y, start - depth), rapid=False))
             legs.append(Leg((x, y, plane), rapid=True))
             depth += cycle.step
     legs.append(Leg((x, y, bottom), rapid=False))

@@ -9,6 +9,7 @@ from gecent.core.cl.records import Statement
 from gecent.core.cl.stream import read_cl
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.machine.selection import apply_machin_options, first_machin, resolve_machine
+from gecent.core.macros.dialect import choose_dialect, read_in_dialect
 from gecent.core.plugins import PluginSet
 from gecent.core.verify.clpath import cl_path
 from gecent.core.verify.compare import AXIS_NAMES, Comparison, compare
@@ -108,9 +109,11 @@ def verify(
     plugins: PluginSet,
     machine_key: str | MachineDefinition | None = None,
     tolerance_mm: float = DEFAULT_TOLERANCE_MM,
+    dialect: str | None = None,
 ) -> Verification:
     machine = cl_machine(cl_file, plugins, machine_key)
-    path = cl_path(read_cl(cl_file, plugins), machine)
+    spoken = choose_dialect(cl_file, plugins, dialect)  # read as the post reads it
+    path = cl_path(read_in_dialect(cl_file, plugins, spoken), machine)
     reading = interpret(tape_path, diameter=machine.number_option(260) == 1)
     unit = "in" if reading.units == "INCHES" else "mm"
     tolerance = tolerance_mm / 25.4 if unit == "in" else tolerance_mm

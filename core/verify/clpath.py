@@ -27,11 +27,12 @@ from gecent.core.cl.records import (
     Statement,
     Word,
 )
-from gecent.core.errors import Diagnostic, InputError, NotYetSupported, SourcePosition
+from gecent.core.errors import Diagnostic, InputError, SourcePosition
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.machine.shuffle import cell_map
 from gecent.core.motion.cycles import Cycle, cycle_legs, in_machine_units, parse_cycle
 from gecent.core.motion.linear import TWO_AXIS
+from gecent.core.motion.tool_axis import three_axis_motion
 from gecent.core.output.modern import CL_PLANES
 from gecent.core.statements.feed import scan_fedrat
 from gecent.core.units import UnitScale
@@ -115,6 +116,9 @@ class _Reader:
         self.circle: Circle | None = None
         self.arc: tuple[Circle, Motion, list[Point]] | None = None
         self.cycle: Cycle | None = None
+        # a control's own peck cycle (G83, option 251 = 1) pecks from the R plane: its peck
+        # depths are the control's, the CL's peck size is kept (docs/decisions.md)
+        self.control_pecks = machine.number_option(251) == 1 and machine.g_code(84) is not None
         self.cycle_first_z: float | None = None
         self.circles = machine.number_option(9) == 1
         self.offsets = int(machine.number_option(263))
@@ -161,9 +165,8 @@ class _Reader:
             delta = (0.0, 0.0, values[0]) if len(values) == 1 else values[:3]
             x, y, z = self.at
             return [(x + delta[0], y + delta[1], z + delta[2])]
-        for point in record.points:
-            if len(point) != 3:
-                raise NotYetSupported("verifying multiaxis motion", record.where)
+        if len(record.points[0]) == 6:  # the spindle axis on a three-axis machine
+            record = three_axis_motion(record, self.machine)
         return [(p[0] + tx, p[1] + ty, p[2] + tz) for p in record.points]
 
     def _statement(self, statement: Statement) -> None:
@@ -287,7 +290,7 @@ class _Reader:
         for hole in points:
             if self.cycle_first_z is None:
                 self.cycle_first_z = self.at[2]
-            legs = cycle_legs(self.cycle, self.at, hole, self.cycle_first_z)
+            legs = cycle_legs(self.cycle, self.at, hole, self.cycle_first_z, self.control_pecks)
             if legs and legs[0].point[2] == self.at[2] and legs[0].point[:2] != self.at[:2]:
                 legs = legs[1:]  # positioning at the present height: the control's own way
             for index, leg in enumerate(legs):

@@ -1,0 +1,212 @@
+"""CAM dialects (issue 19): what a CAM system writes that the post does not, mapped onto the
+post's statements by user-defined macros, as a stage between the reader and the run::
+
+    reader -> dialect stage (the dialect's macros; CSYS/MSYS frames) -> run
+
+A dialect is a plugin (``register_dialects``): its name, how to recognise a file of its CAM
+system from the file's first 64 KB (``sniff``), its macros (syntax macros only: they see
+each record, and ignore it, pass it on, or issue others in its place) and the words that set
+a coordinate frame (``frames``: the record's numbers to a rigid transform, part to machine).
+The same stage serves ``gecent post``, ``gecent verify`` and ``gecent cl``, so the three read
+a file alike. ``--dialect`` forces one (or ``none``).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterable, Iterator
+from dataclasses import dataclass, field
+from math import isclose
+from typing import Any
+
+from gecent.core.cl.records import Circle, Motion, MotionSubtype, Record, Statement
+from gecent.core.cl.stream import read_cl
+from gecent.core.errors import Diagnostic, InputError, SourcePosition
+from gecent.core.macros.engine import MacroEngine
+from gecent.core.macros.model import Kind, Macro
+from gecent.core.macros.table import BUILT_IN_LAYER, MacroTable, Placed
+
+SNIFF_CHARACTERS = 1 << 16
+Matrix = tuple[tuple[float, float, float, float], ...]  # 3 rows of r1, r2, r3, t
+
+
+@dataclass(frozen=True)
+class Dialect:
+    name: str
+    title: str
+    section: str
+    sniff: Callable[[str], bool]
+    macros: tuple[Macro, ...] = ()
+    frames: dict[str, Callable[[Statement], Matrix]] = field(default_factory=dict)
+    priority: int = 50  # lower is tried first (the more specific dialects)
+
+    def __post_init__(self) -> None:
+        for macro in self.macros:
+            if macro.kind is not Kind.SYNTAX:
+                raise ValueError(f"dialect {self.name}: {macro.key} is not a user-defined macro")
+
+
+def rigid(statement: Statement, rows: Matrix) -> Matrix:
+    """The matrix, checked to be a rotation (orthonormal, not a mirror) and a translation."""
+    columns = [[rows[r][c] for r in range(3)] for c in range(3)]
+    for a in range(3):
+        for b in range(3):
+            dot = sum(columns[a][n] * columns[b][n] for n in range(3))
+            if not isclose(dot, 1.0 if a == b else 0.0, abs_tol=1e-5):
+                raise InputError(
+                    f"{statement.major}: the axes are not a rotation (unit and square to "
+                    "each other)",
+                    statement.where,
+                )
+    (r11, r12, r13), (r21, r22, r23), (r31, r32, r33) = (row[:3] for row in rows)
+    determinant = (
+        r11 * (r22 * r33 - r23 * r32)
+        - r12 * (r21 * r33 - r23 * r31)
+        + r13 * (r21 * r32 - r22 * r31)
+    )
+    if determinant < 0:
+        raise InputError(f"{statement.major}: the axes are mirrored (left-handed)", statement.where)
+    return rows
+
+
+IDENTITY: Matrix = ((1.0, 0.0, 0.0, 0.0), (0.0, 1.0, 0.0, 0.0), (0.0, 0.0, 1.0, 0.0))
+
+
+def _point(rows: Matrix, x: float, y: float, z: float) -> tuple[float, float, float]:
+    return tuple(r[0] * x + r[1] * y + r[2] * z + r[3] for r in rows)  # type: ignore[return-value]
+
+
+def _vector(rows: Matrix, i: float, j: float, k: float) -> tuple[float, float, float]:
+    return tuple(r[0] * i + r[1] * j + r[2] * k for r in rows)  # type: ignore[return-value]
+
+
+def transformed(record: Record, rows: Matrix) -> Record:
+    """A motion or circle record in the frame (part to machine); others as they are."""
+    if isinstance(record, Motion):
+        if record.subtype is MotionSubtype.GODLTA:
+            values = record.points[0]
+            delta = (0.0, 0.0, values[0]) if len(values) == 1 else values[:3]
+            points: tuple[tuple[float, ...], ...] = (_vector(rows, *delta),)
+        else:
+            points = tuple(
+                (*_point(rows, *p[:3]), *(_vector(rows, *p[3:6]) if len(p) >= 6 else ()))
+                for p in record.points
+            )
+        return Motion(record.file, record.line, record.number, record.subtype, points,
+                      record.name, record.subscript, offset=record.offset)  # fmt: skip
+    if isinstance(record, Circle):
+        v = record.values
+        values = (*_point(rows, *v[:3]), *_vector(rows, *v[3:6]), *v[6:])
+        return Circle(record.file, record.line, record.number, values, record.name,
+                      record.subscript, record.position, offset=record.offset)  # fmt: skip
+    return record
+
+
+class _Collector:
+    """The host the dialect's macros run on: what they pass on or issue is collected."""
+
+    def __init__(self, warn: Callable[[Diagnostic], None] | None) -> None:
+        self.collected: list[Record] = []
+        self.current_record: Record | None = None
+        self._warn = warn
+
+    def builtin(self, record: Record) -> None:
+        self.collected.append(record)
+
+    def warn(self, diagnostic: Diagnostic) -> None:
+        if self._warn is not None:
+            self._warn(diagnostic)
+
+
+class DialectStage:
+    """The dialect's translation of a record stream (a generator: memory stays flat)."""
+
+    def __init__(self, dialect: Dialect, warn: Callable[[Diagnostic], None] | None = None) -> None:
+        self.dialect = dialect
+        placed = [Placed(m, BUILT_IN_LAYER, n, "gecent") for n, m in enumerate(dialect.macros)]
+        self.table = MacroTable.build(placed)
+        self.host = _Collector(warn)
+        self.engine = MacroEngine(self.table, self.host)  # type: ignore[arg-type]
+        self.frame: Matrix | None = None
+        self._plain_goto = not self.table.covers((5000, int(MotionSubtype.GOTO)))
+
+    def translate(self, records: Iterable[Record]) -> Iterator[Record]:
+        host = self.host
+        engine = self.engine
+        candidates = self.table.candidates
+        frames = self.dialect.frames
+        goto = MotionSubtype.GOTO
+        for record in records:
+            if isinstance(record, Statement) and record.major in frames:
+                rows = frames[record.major](record)
+                self.frame = None if rows == IDENTITY else rows
+                continue
+            if self.frame is not None:
+                record = transformed(record, self.frame)
+            elif self._plain_goto and type(record) is Motion and record.subtype is goto:
+                yield record
+                continue
+            if not candidates(record):
+                yield record
+                continue
+            host.current_record = record
+            engine.dispatch(record)
+            collected = host.collected
+            if collected:
+                yield from collected
+                collected.clear()
+
+
+def sniff_text(path: str) -> str:
+    """A text CL file's first characters, for a dialect to recognise (binary: empty)."""
+    try:
+        with open(path, "rb") as handle:
+            head = handle.read(SNIFF_CHARACTERS)
+    except OSError:
+        return ""
+    if b"\0" in head:
+        return ""
+    return head.decode("latin-1")
+
+
+def choose_dialect(path: str, plugins: Any, forced: str | None = None) -> Dialect | None:
+    """The dialect named by ``forced`` ("none": none), else the first whose sniff knows
+    the file; None when no dialect is needed."""
+    dialects: list[Dialect] = sorted(
+        (info.obj for info in plugins.family("dialects").values()),
+        key=lambda d: (d.priority, d.name),
+    )
+    if forced is not None:
+        if forced.lower() in ("none", "apt"):
+            return None
+        for dialect in dialects:
+            if dialect.name == forced.lower():
+                return dialect
+        names = ", ".join(d.name for d in dialects) or "none installed"
+        raise InputError(
+            f"no dialect {forced!r} (dialects: {names}, or none)", SourcePosition(path)
+        )
+    head = sniff_text(path)
+    if not head:
+        return None
+    for dialect in dialects:
+        if dialect.sniff(head):
+            return dialect
+    return None
+
+
+def in_dialect(
+    records: Iterable[Record], dialect: Dialect | None, warn: Callable[[Diagnostic], None] | None
+) -> Iterator[Record]:
+    if dialect is None:
+        return iter(records)
+    return DialectStage(dialect, warn).translate(records)
+
+
+def read_in_dialect(
+    path: str,
+    plugins: Any,
+    dialect: Dialect | None,
+    warn: Callable[[Diagnostic], None] | None = None,
+) -> Iterator[Record]:
+    """A CL file's records as the post reads them: through its dialect, if it has one."""
+    return in_dialect(read_cl(path, plugins), dialect, warn)

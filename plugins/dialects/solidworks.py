@@ -1,0 +1,148 @@
+"""SolidWorks CAM / CAMWorks APT (shared/corpus/dialects.md, the two real files of
+shared/corpus/solidworks-cam): its words mapped onto the post's.
+
+=====================================  ==================================================
+SolidWorks CAM writes                  the post reads
+=====================================  ==================================================
+``UNIT/MM``                            ``UNITS/MM``
+``LOAD/TOOL,n``                        ``LOADTL/n``
+``SELECT/TOOL,n`` (the next tool)      nothing (a machine's macros may stage it)
+``INSERT/text`` (a note)               ``PPRINT/text``: the listing, not the tape
+``CSYS/r11,r12,r13,tx,...`` (3 x 4)    the setup's frame: points go from part to machine
+``CYCLE/INIT``                         nothing
+``CYCLE/DRILL|DEEP2|...,FEDTO,d,...``  ``CYCLE/DRILL|DEEP,DEPTH,d,CLEAR,r[,STEP,s]...``
+``CSI_...``, ``TRNTYP``, ``SETUP``      nothing (CAM notes; said once in the listing)
+=====================================  ==================================================
+
+The cycle's pairs: FEDTO the depth below the hole's top, RAPTO the R plane above it, RTRCTO
+the retract plane above it (above R: back to the level the cycle started from, G98), DWELL
+seconds, 1STPECK and SUBPECK the first and later peck depths (the post pecks SUBPECK each
+time: the smaller, never deeper than asked; the listing says so), MMPM/IPM the feed.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from gecent.core.cl.records import Statement
+from gecent.core.errors import InputError
+from gecent.core.hookspecs import Register, hookimpl
+from gecent.core.macros import Macros
+from gecent.core.macros.dialect import Dialect, Matrix, rigid
+
+NAME = "solidworks-cam"
+TITLE = "SolidWorks CAM"
+macros = Macros()
+
+# SolidWorks CAM cycle words and the post's cycles (DEEP2: a peck drill)
+CYCLES = {"DRILL": "DRILL", "DEEP": "DEEP", "DEEP2": "DEEP", "TAP": "TAP", "BORE": "BORE",
+          "REAM": "REAM", "CSINK": "CSINK", "BRKCHP": "BRKCHP", "FACE": "FACE"}  # fmt: skip
+NOTES = ("TRNTYP", "SETUP")
+
+
+def _note_once(ctx: Any, word: str) -> None:
+    noted = ctx.globals.setdefault("noted", set())
+    if word not in noted:
+        noted.add(word)
+        ctx.warn(f"{word} IS A {TITLE.upper()} NOTE; IGNORED")
+
+
+@macros.syntax("UNIT/$P1()")
+def unit(ctx: Any) -> None:
+    ctx.cmd("UNITS", ctx.p[1].name)
+
+
+@macros.syntax("LOAD/TOOL,$P1")
+def load_tool(ctx: Any) -> None:
+    ctx.cmd("LOADTL", ctx.p[1])
+
+
+@macros.syntax("SELECT/TOOL,$P1")
+def select_tool(ctx: Any) -> None:
+    """The next tool, staged: nothing for the post itself."""
+
+
+@macros.syntax("INSERT/$P1''")
+def insert_note(ctx: Any) -> None:
+    ctx.pprint(ctx.p[1])
+
+
+@macros.syntax("CYCLE/INIT")
+def cycle_init(ctx: Any) -> None:
+    """Announces the cycle statement that follows."""
+
+
+@macros.syntax("CYCLE/$P1(DRILL,DEEP,DEEP2,TAP,BORE,REAM,CSINK,BRKCHP,FACE),$P2*")
+def cycle(ctx: Any) -> None:
+    kind = CYCLES[ctx.p[1].name]
+    pairs = _pairs(ctx.record, ctx.p[2])
+    if "FEDTO" not in pairs:
+        raise InputError(f"CYCLE/{ctx.p[1].name}: FEDTO (the depth) is missing", ctx.record.where)
+    words: list[Any] = [kind, "DEPTH", abs(pairs["FEDTO"]), "CLEAR", pairs.get("RAPTO", 0.0)]
+    peck = pairs.get("SUBPECK", pairs.get("1STPECK"))
+    if kind == "DEEP" and peck:
+        words += ["STEP", peck]
+        if pairs.get("1STPECK") not in (None, peck):
+            ctx.warn(f"CYCLE/{ctx.p[1].name}: EVERY PECK IS {peck:g} (FIRST PECK "
+                     f"{pairs['1STPECK']:g} NOT KEPT)")  # fmt: skip
+    if pairs.get("DWELL"):
+        words += ["DWELL", pairs["DWELL"]]
+    if pairs.get("RTRCTO", 0.0) > pairs.get("RAPTO", 0.0):
+        words += ["RETURN", 0.0]  # back to the level the cycle started from
+    for unit_word in ("MMPM", "IPM", "MMPR", "IPR"):
+        if unit_word in pairs:
+            words += [unit_word, pairs[unit_word]]
+    ctx.cmd("CYCLE", *words)
+
+
+def _pairs(record: Statement, items: tuple[Any, ...]) -> dict[str, float]:
+    pairs: dict[str, float] = {}
+    index = 0
+    while index < len(items):
+        word = items[index]
+        value = items[index + 1] if index + 1 < len(items) else None
+        if not hasattr(word, "name") or value is None or hasattr(value, "name"):
+            raise InputError(f"CYCLE: expected word, value pairs, found {word!s}", record.where)
+        pairs[word.name] = float(value)
+        index += 2
+    return pairs
+
+
+@macros.syntax("#2000:*")
+def vendor_words(ctx: Any) -> None:
+    """CSI_... (CAMWorks' own settings), TRNTYP and SETUP: notes for the CAM system."""
+    major = getattr(ctx.record, "major", "")
+    if major.startswith("CSI_") or major in NOTES:
+        _note_once(ctx, major)
+        return
+    ctx.output()
+
+
+def csys(statement: Statement) -> Matrix:
+    """CSYS/r11,r12,r13,tx, r21,r22,r23,ty, r31,r32,r33,tz: part to machine."""
+    values = statement.numbers()
+    if len(values) != 12 or len(values) != len(statement.args):
+        raise InputError("CSYS expects 12 numbers, a 3 x 4 matrix row by row", statement.where)
+    rows = tuple(tuple(values[4 * r : 4 * r + 4]) for r in range(3))
+    return rigid(statement, rows)  # type: ignore[arg-type]
+
+
+def sniff(head: str) -> bool:
+    """CAMWorks writes CSI_ settings and CSYS matrices, and UNIT (not UNITS)."""
+    return "\nCSI_" in head or ("\nCSYS/" in head and "\nUNIT/" in head)
+
+
+DIALECT = Dialect(
+    NAME,
+    TITLE,
+    "shared/corpus/dialects.md: SolidWorks CAM / CAMWorks APT",
+    sniff,
+    tuple(macros.macros),
+    {"CSYS": csys},
+    priority=20,
+)
+
+
+@hookimpl
+def register_dialects(register: Register) -> None:
+    register(DIALECT)

@@ -1,0 +1,212 @@
+"""CAM dialects (issue 19): SolidWorks CAM's real files post on linuxcnc-mill and pass
+`gecent verify`; each of its words is read as the post's; `gecent cl` names the dialect;
+a six-value GOTO along the spindle axis is three-axis motion, a tilted one an error."""
+
+from __future__ import annotations
+
+import shutil
+from pathlib import Path
+
+import pytest
+from click.testing import CliRunner
+from gecent.core.cl.apt_source import AptSourceReader
+from gecent.core.cl.records import Circle, Motion, Record, Statement
+from gecent.core.cli import main
+from gecent.core.dispatch.post import post
+from gecent.core.errors import InputError
+from gecent.core.macros.dialect import DialectStage, choose_dialect
+from gecent.core.output.tape import tape_image
+from gecent.core.plugins import get_plugins
+from gecent.plugins.dialects.solidworks import DIALECT
+
+from .conftest import SHARED
+
+SOLIDWORKS = SHARED / "corpus" / "solidworks-cam"
+FILES = ["Sacrifice-Board.apt", "manufacture3-bottom.apt"]
+needs_corpus = pytest.mark.skipif(not SOLIDWORKS.is_dir(), reason="shared corpus not present")
+needs_rs274 = pytest.mark.skipif(shutil.which("rs274") is None, reason="rs274 not installed")
+
+
+def translated(text: str) -> list[Record]:
+    records = AptSourceReader("sw.apt").read_lines(text.splitlines(keepends=True))
+    notes: list[str] = []
+    stage = DialectStage(DIALECT, lambda d: notes.append(d.text))
+    made = list(stage.translate(records))
+    translated.notes = notes  # type: ignore[attr-defined]
+    return made
+
+
+def statements(records: list[Record]) -> list[str]:
+    shown = []
+    for record in records:
+        if isinstance(record, Statement):
+            args = ",".join(f"{a:g}" if isinstance(a, float) else str(a) for a in record.args)
+            text = f"{record.major} {record.text}" if record.text else record.major
+            shown.append(f"{record.major}/{args}" if args else text)
+    return shown
+
+
+@needs_corpus
+@pytest.mark.parametrize("name", FILES)
+def test_the_files_dialect_is_detected(name: str) -> None:
+    dialect = choose_dialect(str(SOLIDWORKS / name), get_plugins())
+    assert dialect is not None and dialect.name == "solidworks-cam"
+
+
+@needs_corpus
+def test_other_files_have_no_dialect() -> None:
+    for other in ("creo/schruppen_1.ncl.1", "apt4/test1.apt", "apt4/test1.cl3"):
+        assert choose_dialect(str(SHARED / "corpus" / other), get_plugins()) is None
+
+
+@needs_corpus
+@needs_rs274
+@pytest.mark.parametrize("name", FILES)
+def test_solidworks_files_post_and_verify(name: str, tmp_path: Path) -> None:
+    tape = tmp_path / "part.ngc"
+    runner = CliRunner()
+    posted = runner.invoke(
+        main, ["post", str(SOLIDWORKS / name), "--machine", "linuxcnc-mill", "-o", str(tape)]
+    )
+    assert posted.exit_code == 0, posted.output
+    checked = runner.invoke(
+        main, ["verify", str(tape), "--cl", str(SOLIDWORKS / name), "--machine", "linuxcnc-mill"]
+    )
+    assert checked.exit_code == 0, checked.output
+    assert "verify: passed" in checked.output
+
+
+@needs_corpus
+def test_without_the_dialect_the_file_stops_at_its_first_vendor_word() -> None:
+    runner = CliRunner()
+    done = runner.invoke(
+        main,
+        ["post", str(SOLIDWORKS / FILES[0]), "--machine", "linuxcnc-mill", "--dialect", "none",
+         "-o", "/dev/null"],
+    )  # fmt: skip
+    assert done.exit_code == 3 and "Sacrifice-Board.apt:5" in done.output  # LOAD/TOOL,12
+
+
+@needs_corpus
+def test_gecent_cl_names_the_dialect() -> None:
+    shown = CliRunner().invoke(main, ["cl", str(SOLIDWORKS / FILES[0])])
+    assert shown.exit_code == 0
+    lines = shown.output.splitlines()
+    assert lines[0] == "DIALECT solidworks-cam (SolidWorks CAM), detected"
+    assert any("UNITS" in line for line in lines) and not any("UNIT " in line for line in lines)
+
+
+def test_an_unknown_dialect_is_refused_with_the_list() -> None:
+    with pytest.raises(InputError, match=r"no dialect 'catia'.*solidworks-cam"):
+        choose_dialect("x.apt", get_plugins(), "catia")
+
+
+# -- each word ------------------------------------------------------------------------------
+
+
+def test_unit_load_select_insert() -> None:
+    made = translated(
+        "PARTNO/1\nUNIT/MM\nINSERT/[HOLDER=C40] 10.0mm DRILL\nLOAD/TOOL,18\nSELECT/TOOL,19\n"
+    )
+    assert statements(made) == ["PARTNO 1", "UNITS/MM", "PPRINT [HOLDER=C40] 10.0mm DRILL",
+                                "LOADTL/18"]  # fmt: skip
+
+
+def test_vendor_notes_are_ignored_and_said_once() -> None:
+    made = translated(
+        "CSI_SET_FLUTE_LENGTH/4.\nCSI_SET_FLUTE_LENGTH/5.\nTRNTYP/WORLD,0,0,0\nSETUP/START,2\n"
+        "COOLNT/FLOOD\nSETUP/END,2\n"
+    )
+    assert statements(made) == ["COOLNT/FLOOD"]
+    assert translated.notes == [  # type: ignore[attr-defined]
+        "CSI_SET_FLUTE_LENGTH IS A SOLIDWORKS CAM NOTE; IGNORED",
+        "TRNTYP IS A SOLIDWORKS CAM NOTE; IGNORED",
+        "SETUP IS A SOLIDWORKS CAM NOTE; IGNORED",
+    ]
+
+
+def test_cycles_as_the_posts() -> None:
+    made = translated(
+        "CYCLE/INIT\nCYCLE/DRILL,FEDTO,5.4,MMPM,364.49,RAPTO,3.,RTRCTO,27.5,DWELL,0\n"
+        "CYCLE/DEEP2,FEDTO,28.6,1STPECK,5.,SUBPECK,2.,MMPM,382.27,RAPTO,3.,RTRCTO,2.\n"
+        "CYCLE/OFF\n"
+    )
+    assert statements(made) == [
+        "CYCLE/DRILL,DEPTH,5.4,CLEAR,3,RETURN,0,MMPM,364.49",
+        "CYCLE/DEEP,DEPTH,28.6,CLEAR,3,STEP,2,MMPM,382.27",  # RTRCTO below R: back to R
+        "CYCLE/OFF",
+    ]
+    assert translated.notes == ["CYCLE/DEEP2: EVERY PECK IS 2 (FIRST PECK 5 NOT KEPT)"]  # type: ignore[attr-defined]
+
+
+def test_a_cycle_without_its_depth_names_the_line() -> None:
+    with pytest.raises(InputError, match=r"sw.apt:1.*FEDTO \(the depth\) is missing"):
+        translated("CYCLE/DRILL,MMPM,100,RAPTO,3\n")
+
+
+def test_csys_moves_the_part_into_the_machine() -> None:
+    """CSYS/-1,0,0,456.35,0,-1,0,197.03,0,0,1,0: a half turn about Z and a shift; points,
+    arc centres and the tool axis turn with it; the identity ends it."""
+    made = translated(
+        "CSYS/-1.,0,0,456.35,0,-1.,0,197.03,0,0,1.,0\nGOTO/295.4,106.3,25.\n"
+        "CIRCLE/300,100,0,0,0,1\nGOTO/10,20,30,0,0,1\nCSYS/1.,0,0,0,0,1.,0,0,0,0,1.,0\n"
+        "GOTO/1,2,3\n"
+    )
+    motions = [r for r in made if isinstance(r, Motion | Circle)]
+    assert motions[0].points[0] == pytest.approx((160.95, 90.73, 25.0))  # type: ignore[union-attr]
+    assert motions[1].values == pytest.approx((156.35, 97.03, 0.0, 0.0, 0.0, 1.0))  # type: ignore[union-attr]
+    assert motions[2].points[0] == pytest.approx((446.35, 177.03, 30.0, 0.0, 0.0, 1.0))  # type: ignore[union-attr]
+    assert motions[3].points[0] == (1.0, 2.0, 3.0)  # type: ignore[union-attr]
+
+
+@pytest.mark.parametrize(
+    ("text", "message"),
+    [
+        ("CSYS/1,0,0,0,0,2,0,0,0,0,1,0\n", "not a rotation"),
+        ("CSYS/1,0,0,0,0,1,0,0,0,0,-1,0\n", "mirrored"),
+        ("CSYS/1,0,0,0\n", "12 numbers"),
+    ],
+)
+def test_a_bad_csys_names_its_line(text: str, message: str) -> None:
+    with pytest.raises(InputError, match=f"sw.apt:1.*{message}"):
+        translated(text)
+
+
+def test_a_flipped_setup_turns_the_tool_axis_to_the_spindle(tmp_path: Path) -> None:
+    """Sacrifice-Board's bottom side: CSYS/-1,0,0,0,0,1,0,0,0,0,-1,0 and GOTOs with the tool
+    axis 0,0,-1 in part coordinates post as ordinary three-axis moves."""
+    program = (
+        "PARTNO/1\nUNIT/MM\nCSI_X/1\nLOAD/TOOL,1\nSPINDL/1000,RPM,CLW\nFEDRAT/100.,MMPM\n"
+        "CSYS/-1.,0,0,0,0,1.,0,0,0,0,-1.,0\nGOTO/390.,145.,-55.,0,0,-1.\nGOTO/390.,145.,-27.5,0,0,-1.\n"
+        "FINI\n"
+    )  # fmt: skip
+    path = tmp_path / "flipped.apt"
+    path.write_text(program)
+    result = post(str(path), get_plugins(), "linuxcnc-mill")
+    tape = tape_image(result.blocks)
+    assert "X-390. Y145. Z55." in tape and "Z27.5" in tape
+
+
+def test_a_tilted_tool_axis_on_a_three_axis_machine_names_its_line(tmp_path: Path) -> None:
+    path = tmp_path / "tilted.apt"
+    path.write_text("PARTNO T\nUNITS/MM\nFROM/0,0,10\nGOTO/1,2,3,0,0.5,0.8660254\nFINI\n")
+    with pytest.raises(InputError) as refused:
+        post(str(path), get_plugins(), "linuxcnc-mill")
+    assert "tilted.apt:4" in str(refused.value)
+    assert "no rotary axes; use a multiaxis machine" in str(refused.value)
+
+
+def test_a_spindle_axis_goto_is_three_axis_motion(tmp_path: Path) -> None:
+    path = tmp_path / "axis.apt"
+    path.write_text(
+        "PARTNO T\nUNITS/MM\nFROM/0,0,10\nFEDRAT/100\nMULTAX/ON\nGOTO/1,2,3,0,0,1\n"
+        "MULTAX/OFF\nGOTO/4,5,6,0,0,1\nFINI\n"
+    )
+    tape = tape_image(post(str(path), get_plugins(), "linuxcnc-mill").blocks)
+    assert "X1. Y2. Z3." in tape and "X4. Y5. Z6." in tape
+
+
+def test_words_may_begin_with_digits_and_circles_may_lack_a_radius() -> None:
+    made = list(AptSourceReader("x").read_lines(["CYCLE/DEEP,1STPECK,5\n", "CIRCLE/1,2,3,0,0,1\n"]))
+    assert made[0].args[1].name == "1STPECK"  # type: ignore[union-attr]
+    assert made[1].values == (1.0, 2.0, 3.0, 0.0, 0.0, 1.0)  # type: ignore[union-attr]
