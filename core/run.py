@@ -287,9 +287,7 @@ class Run(Elements):
     def end_of_input(self) -> RunResult:
         if self._circle is not None and self._circle.collecting:
             self._circle.finish()
-        if not self.finished and self.macros is not None:
-            self.macros.finish(None)
-        return self._finish()
+        return self._finish()  # (with no FINI: the machine shutdown macro at the end)
 
     def _fast_path(self) -> FastLinear | None:
         """The fast path (core/motion/fastpath.py), when nothing special is in force."""
@@ -367,7 +365,11 @@ class Run(Elements):
 
     def _finish(self) -> RunResult:
         if not self.finished:
+            # CAM systems end files without FINI (NX: END-OF-PATH): the program ends as at
+            # FINI, with the warning (docs/decisions.md)
             self.warn(Diagnostic("NO FINI STATEMENT AT THE END OF THE CL FILE"))
+            last = self._record
+            self._general(Fini(self._file, None, last.number + 1 if last is not None else 1))
         self.result.cut_minutes = self.output.cut_minutes
         self.result.dwell_minutes = self.output.dwell_minutes
         if self.output.slide_limits.exceeded and self.machine.number_option(110) == 2:

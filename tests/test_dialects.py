@@ -5,6 +5,7 @@ a six-value GOTO along the spindle axis is three-axis motion, a tilted one an er
 from __future__ import annotations
 
 import shutil
+from itertools import pairwise
 from pathlib import Path
 
 import pytest
@@ -210,3 +211,146 @@ def test_words_may_begin_with_digits_and_circles_may_lack_a_radius() -> None:
     made = list(AptSourceReader("x").read_lines(["CYCLE/DEEP,1STPECK,5\n", "CIRCLE/1,2,3,0,0,1\n"]))
     assert made[0].args[1].name == "1STPECK"  # type: ignore[union-attr]
     assert made[1].values == (1.0, 2.0, 3.0, 0.0, 0.0, 1.0)  # type: ignore[union-attr]
+
+
+# -- the examples of dialects.md, NX and NCL -------------------------------------------------
+
+DIALECTS_MD = SHARED / "corpus" / "dialects.md"
+
+
+def dialect_examples() -> list[str]:
+    import re
+
+    return re.findall(r"```\n(.*?)```", DIALECTS_MD.read_text(encoding="utf-8"), re.DOTALL)
+
+
+@needs_corpus
+@pytest.mark.parametrize(
+    ("index", "name"), [(0, "nx"), (1, "solidworks-cam"), (2, "ncl")], ids=["nx", "sw", "ncl"]
+)
+def test_each_example_is_detected(index: int, name: str, tmp_path: Path) -> None:
+    path = tmp_path / "example.cl"
+    path.write_text(dialect_examples()[index])
+    dialect = choose_dialect(str(path), get_plugins())
+    assert dialect is not None and dialect.name == name
+
+
+@needs_corpus
+@pytest.mark.parametrize("index", [0, 1], ids=["nx", "sw"])
+def test_the_nx_and_solidworks_examples_post(index: int, tmp_path: Path) -> None:
+    source, tape = tmp_path / "example.cl", tmp_path / "example.ngc"
+    source.write_text(dialect_examples()[index])
+    posted = CliRunner().invoke(
+        main, ["post", str(source), "--machine", "linuxcnc-mill", "-o", str(tape)]
+    )
+    assert posted.exit_code == 0, posted.output
+    assert "NO FINI STATEMENT" in posted.output  # they end without FINI: the program ends
+    assert tape.read_text().rstrip().endswith("M02\n%")
+
+
+@needs_corpus
+@needs_rs274
+def test_the_nx_example_verifies_nurbs_and_all(tmp_path: Path) -> None:
+    """The NX example's path (11-value circle, peck cycle, NURBS) read back by rs274. (The
+    SolidWorks example is a fragment that drills from an unknown start: it posts, above.)"""
+    source, tape = tmp_path / "example.cl", tmp_path / "example.ngc"
+    source.write_text(dialect_examples()[0])
+    runner = CliRunner()
+    assert (
+        runner.invoke(
+            main, ["post", str(source), "--machine", "linuxcnc-mill", "-o", str(tape)]
+        ).exit_code
+        == 0
+    )
+    checked = runner.invoke(
+        main, ["verify", str(tape), "--cl", str(source), "--machine", "linuxcnc-mill"]
+    )
+    assert checked.exit_code == 0, checked.output
+
+
+@needs_corpus
+def test_the_ncl_example_names_its_tilted_tool_axis(tmp_path: Path) -> None:
+    """Its second GOTO tilts the tool 5 degrees: on a three-axis machine that is an error
+    naming the line (a multiaxis machine posts it, issue 21)."""
+    source = tmp_path / "ncl.apt"
+    source.write_text(dialect_examples()[2])
+    done = CliRunner().invoke(
+        main, ["post", str(source), "--machine", "linuxcnc-mill", "-o", str(tmp_path / "t")]
+    )
+    assert done.exit_code == 2
+    assert "ncl.apt:8" in done.output and "use a multiaxis machine" in done.output
+    assert "PART 4711" not in done.output  # REMARK lines are comments, read without a word
+
+
+def nx(text: str) -> list[Record]:
+    from gecent.plugins.dialects.nx import DIALECT as NX
+
+    records = AptSourceReader("nx.cls").read_lines(text.splitlines(keepends=True))
+    return list(DialectStage(NX, None, metric=True).translate(records))
+
+
+def test_nx_words() -> None:
+    made = nx(
+        "TOOL PATH/CONTOUR_OUTER,TOOL,FACE_MILL_D40\nTLDATA/MILL,40.0,1.0,50.0,0.0,0.0\n"
+        "PAINT/PATH\nLOAD/TOOL,3,ADJUST,3\nSELECT/TOOL,3\nFEDRAT/MMPM,600\n"
+        "CUTCOM/LEFT,XYPLAN\nCYCLE/DRILL,DEEP,RAPTO,3.0,FEDTO,-12.0,MMPM,250.0\nEND-OF-PATH\n"
+    )
+    assert statements(made) == [
+        "PPRINT CONTOUR_OUTER FACE_MILL_D40",
+        "LOADTL/3,ADJUST,3",
+        "FEDRAT/MMPM,600",
+        "CUTCOM/LEFT",
+        "CYCLE/DEEP,DEPTH,12,CLEAR,3,MMPM,250",
+    ]
+    cutter = [r for r in made if not isinstance(r, Statement)]
+    assert [type(r).__name__ for r in cutter] == ["Arelem"]  # TLDATA -> CUTTER/40,1
+
+
+def test_nurbs_become_moves_on_the_curve_within_intol() -> None:
+    """A quadratic B-spline (knots 0,0,0,.5,1,1,1): the moves start at the curve's start,
+    end at its end, and no chord strays from the curve by more than INTOL."""
+    from gecent.core.cl.nurbs import NurbsCurve, _off_chord
+    from gecent.core.errors import SourcePosition
+
+    made = nx(
+        "INTOL/0.005\nNURBS/\nKNOT/0,0,0,0.5,1,$\n1,1\nCNTRL/0,0,-2\nCNTRL/5,8,-2\n"
+        "CNTRL/15,8,-2\nCNTRL/20,0,-2\nGOTO/20,0,-2\n"
+    )
+    moves = [r for r in made if isinstance(r, Motion)]
+    points = moves[0].points
+    assert points[0] == pytest.approx((0.0, 0.0, -2.0))
+    assert points[-1] == pytest.approx((20.0, 0.0, -2.0))
+    control = [(0, 0, -2), (5, 8, -2), (15, 8, -2), (20, 0, -2)]
+    curve = NurbsCurve([0, 0, 0, 0.5, 1, 1, 1], control, SourcePosition("t"))
+    samples = [curve.at(u / 400) for u in range(401)]
+    for a, b in pairwise(points):
+        near = [p for p in samples if min(a[0], b[0]) - 1e-9 <= p[0] <= max(a[0], b[0]) + 1e-9]
+        assert max(_off_chord(p, a, b) for p in near) <= 0.005 + 1e-9
+    assert moves[1].points == ((20.0, 0.0, -2.0),)  # the GOTO after it stays
+
+
+def test_a_weighted_nurbs_is_a_true_circle() -> None:
+    """Weights: a quarter circle of radius 10 as a rational quadratic (w = cos 45 degrees)."""
+    from gecent.core.cl.nurbs import NurbsCurve
+    from gecent.core.errors import SourcePosition
+
+    w = 0.5**0.5
+    curve = NurbsCurve([0, 0, 0, 1, 1, 1], [(10, 0, 0, 1), (10, 10, 0, w), (0, 10, 0, 1)],
+                       SourcePosition("t"))  # fmt: skip
+    for u in (0.1, 0.3, 0.5, 0.9):
+        x, y, _ = curve.at(u)
+        assert (x * x + y * y) ** 0.5 == pytest.approx(10.0, abs=1e-9)
+
+
+@pytest.mark.parametrize(
+    ("text", "message"),
+    [
+        ("NURBS/\nKNOT/0,1\nCNTRL/0,0,0\nCNTRL/1,1,1\n", "give no degree"),
+        ("NURBS/\nKNOT/0,0,1,0.5,1,1\nCNTRL/0,0,0\nCNTRL/1,1,1\nCNTRL/2,0,0\n", "not decrease"),
+        ("NURBS/\nKNOT/0,0,0,1,1,1\nCNTRL/0,0,0,0\nCNTRL/1,1,1\nCNTRL/2,0,0\n", "weight above 0"),
+    ],
+)
+def test_a_bad_nurbs_names_its_line(text: str, message: str) -> None:
+    with pytest.raises(InputError, match=message) as refused:
+        nx(text)
+    assert "nx.cls:1" in str(refused.value)

@@ -7,6 +7,9 @@ Rules (decisions with seed lines in docs/decisions.md):
 * ``$$`` starts a comment, kept as a :class:`Comment` record; a comment line that ends in a
   single ``$`` continues on the next line (Creo writes multi-line ``$$->`` comments so);
 * PARTNO, PPRINT and INSERT keep the rest of the line verbatim (a leading ``/`` dropped);
+  REMARK lines are comments;
+* a major word may be several: hyphened (``END-OF-PATH``) or blank-separated before its slash
+  (NX's ``TOOL PATH/``, read as ``TOOL_PATH``);
 * FROM/GOTO take 3 values (6 after MULTAX/ON), GODLTA 1 or 3; CIRCLE takes the canonical
   7 values xc, yc, zc, i, j, k, r, or 6 (no radius) or 11 (NX: the 7 and four more, dropped);
   a word may begin with digits (SolidWorks CAM's 1STPECK); INTOL, OUTTOL and CUTTER become
@@ -38,6 +41,7 @@ from gecent.core.cl.vocabulary import vocabulary
 from gecent.core.errors import InputError, SourcePosition
 
 TEXT_MAJORS = frozenset({"PARTNO", "PPRINT", "INSERT"})
+TEXT_LINES = TEXT_MAJORS | {"REMARK"}  # the rest of the line is text (REMARK: a comment)
 _MOTION = {"FROM": MotionSubtype.FROM, "GOTO": MotionSubtype.GOTO, "GODLTA": MotionSubtype.GODLTA}
 _ARELEM = {"INTOL": 4, "OUTTOL": 5, "CUTTER": 6}
 # Flag words an APT processor turns into type-6000 records (001 L3569-3576): subtype, item 4.
@@ -56,6 +60,10 @@ _TOKEN = re.compile(
 _NUMBER_ITEM = r"\s*[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?\s*"
 _NUMBER_LIST = re.compile(rf"{_NUMBER_ITEM}(?:,{_NUMBER_ITEM})*\Z", re.ASCII)
 _MAJOR = re.compile(r"\s*((?:[A-Za-z]|\d+[A-Za-z])[A-Za-z0-9_]*)", re.ASCII)
+# a major word of several: END-OF-PATH (hyphens), TOOL PATH/ (a blank, before the slash)
+_MORE_MAJOR = re.compile(
+    r"(?:-([A-Za-z][A-Za-z0-9_]*))|(?:[ \t]+([A-Za-z][A-Za-z0-9_]*)(?=\s*(?:/|\Z)))", re.ASCII
+)
 # the reader's fast path: a whole one-line "GOTO / x, y, z" (no continuation, no comment)
 _ONE_LINE_GOTO = re.compile(
     rf"\s*GOTO\s*/({_NUMBER_ITEM}),({_NUMBER_ITEM}),({_NUMBER_ITEM})[\r\n]*\Z", re.ASCII
@@ -134,7 +142,7 @@ class AptSourceReader:
                 pending, pending_kind = _Line(number), "statement"
             stripped = head.rstrip()
             first_word = _MAJOR.match(pending.text or stripped)
-            is_text = first_word is not None and first_word.group(1).upper() in TEXT_MAJORS
+            is_text = first_word is not None and first_word.group(1).upper() in TEXT_LINES
             if not is_text and stripped.endswith("$"):
                 pending.add(stripped[:-1], number, 1)
                 continue
@@ -174,8 +182,15 @@ class AptSourceReader:
             )
         major = match.group(1).upper()
         rest_at = match.end()
+        if major not in TEXT_LINES:
+            while (more := _MORE_MAJOR.match(text, rest_at)) is not None:
+                joined, spaced = more.groups()
+                major += f"-{joined.upper()}" if joined else f"_{spaced.upper()}"
+                rest_at = more.end()
         self.number += 1
         line = logical.line
+        if major == "REMARK":  # an APT comment statement
+            return Comment(self.file, line, self.number, text[rest_at:].strip())
         if major in TEXT_MAJORS:
             body = text[rest_at:].strip()
             if body.startswith("/"):
@@ -256,7 +271,7 @@ class AptSourceReader:
             if subtype is MotionSubtype.GODLTA:
                 counts: tuple[int, ...] = (1, 3)
             else:
-                counts = (6,) if self.multiax else (3, 6)
+                counts = (3, 6)  # (NCL writes FROM/x,y,z under MULTAX/ON: no tool axis)
             values = self._numbers(logical, major, args, counts)
             return Motion(file, line, number, subtype, (values,))
         if major == "CIRCLE":

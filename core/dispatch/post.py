@@ -50,5 +50,5 @@ def post(
         run.state.header = tool_list(path, plugins, machine, spoken)
     for note in notes:
         run.warn(note)
-    records = read_in_dialect(path, plugins, spoken, run.warn)
+    records = read_in_dialect(path, plugins, spoken, run.warn, run.units.machine_mm == 1.0)
     return run.process(watch(records) if watch is not None else records)

@@ -18,7 +18,8 @@ from dataclasses import dataclass, field
 from math import isclose
 from typing import Any
 
-from gecent.core.cl.records import Circle, Motion, MotionSubtype, Record, Statement
+from gecent.core.cl.nurbs import NurbsCollector
+from gecent.core.cl.records import Arelem, Circle, Motion, MotionSubtype, Record, Statement
 from gecent.core.cl.stream import read_cl
 from gecent.core.errors import Diagnostic, InputError, SourcePosition
 from gecent.core.macros.engine import MacroEngine
@@ -38,6 +39,7 @@ class Dialect:
     macros: tuple[Macro, ...] = ()
     frames: dict[str, Callable[[Statement], Matrix]] = field(default_factory=dict)
     priority: int = 50  # lower is tried first (the more specific dialects)
+    nurbs: bool = False  # NURBS/KNOT/CNTRL curves become straight moves (core/cl/nurbs.py)
 
     def __post_init__(self) -> None:
         for macro in self.macros:
@@ -120,40 +122,73 @@ class _Collector:
 class DialectStage:
     """The dialect's translation of a record stream (a generator: memory stays flat)."""
 
-    def __init__(self, dialect: Dialect, warn: Callable[[Diagnostic], None] | None = None) -> None:
+    def __init__(
+        self,
+        dialect: Dialect,
+        warn: Callable[[Diagnostic], None] | None = None,
+        metric: bool = False,
+    ) -> None:
         self.dialect = dialect
         placed = [Placed(m, BUILT_IN_LAYER, n, "gecent") for n, m in enumerate(dialect.macros)]
         self.table = MacroTable.build(placed)
         self.host = _Collector(warn)
         self.engine = MacroEngine(self.table, self.host)  # type: ignore[arg-type]
         self.frame: Matrix | None = None
+        self.tolerances: dict[int, float] = {}
+        self.metric = metric  # until a UNITS says: the machine's unit, as the post takes it
         self._plain_goto = not self.table.covers((5000, int(MotionSubtype.GOTO)))
 
     def translate(self, records: Iterable[Record]) -> Iterator[Record]:
-        host = self.host
-        engine = self.engine
-        candidates = self.table.candidates
-        frames = self.dialect.frames
-        goto = MotionSubtype.GOTO
+        nurbs: NurbsCollector | None = None
         for record in records:
-            if isinstance(record, Statement) and record.major in frames:
-                rows = frames[record.major](record)
-                self.frame = None if rows == IDENTITY else rows
+            if nurbs is not None:
+                if isinstance(record, Statement) and nurbs.take(record):
+                    continue
+                yield from self._translate(nurbs.motion(self._tolerance()))
+                nurbs = None
+            if self.dialect.nurbs and isinstance(record, Statement) and record.major == "NURBS":
+                nurbs = NurbsCollector(record)
                 continue
-            if self.frame is not None:
-                record = transformed(record, self.frame)
-            elif self._plain_goto and type(record) is Motion and record.subtype is goto:
-                yield record
-                continue
-            if not candidates(record):
-                yield record
-                continue
-            host.current_record = record
-            engine.dispatch(record)
-            collected = host.collected
-            if collected:
-                yield from collected
-                collected.clear()
+            self._note_tolerance(record)
+            yield from self._translate(record)
+        if nurbs is not None:
+            yield from self._translate(nurbs.motion(self._tolerance()))
+
+    def _note_tolerance(self, record: Record) -> None:
+        """UNITS and INTOL/OUTTOL: what a NURBS curve is cut to."""
+        if isinstance(record, Arelem) and record.subtype in (4, 5) and record.values:
+            self.tolerances[record.subtype] = abs(record.values[0])
+        elif isinstance(record, Statement) and record.major in ("UNITS", "UNIT"):
+            self.metric = "MM" in record.words()
+
+    def _tolerance(self) -> float:
+        """INTOL (chords lie inside a curve), else OUTTOL, else 0.01 mm or 0.0004 in."""
+        for subtype in (4, 5):
+            if self.tolerances.get(subtype, 0.0) > 0:
+                return self.tolerances[subtype]
+        return 0.01 if self.metric else 0.0004
+
+    def _translate(self, record: Record) -> Iterator[Record]:
+        """One record through the frame and the dialect's macros."""
+        frames = self.dialect.frames
+        if isinstance(record, Statement) and record.major in frames:
+            rows = frames[record.major](record)
+            self.frame = None if rows == IDENTITY else rows
+            return
+        if self.frame is not None:
+            record = transformed(record, self.frame)
+        elif self._plain_goto and type(record) is Motion and record.subtype is MotionSubtype.GOTO:
+            yield record
+            return
+        if not self.table.candidates(record):
+            yield record
+            return
+        host = self.host
+        host.current_record = record
+        self.engine.dispatch(record)
+        if host.collected:
+            yield from host.collected
+            host.collected.clear()
 
 
 def sniff_text(path: str) -> str:
@@ -195,11 +230,14 @@ def choose_dialect(path: str, plugins: Any, forced: str | None = None) -> Dialec
 
 
 def in_dialect(
-    records: Iterable[Record], dialect: Dialect | None, warn: Callable[[Diagnostic], None] | None
+    records: Iterable[Record],
+    dialect: Dialect | None,
+    warn: Callable[[Diagnostic], None] | None,
+    metric: bool = False,
 ) -> Iterator[Record]:
     if dialect is None:
         return iter(records)
-    return DialectStage(dialect, warn).translate(records)
+    return DialectStage(dialect, warn, metric).translate(records)
 
 
 def read_in_dialect(
@@ -207,6 +245,8 @@ def read_in_dialect(
     plugins: Any,
     dialect: Dialect | None,
     warn: Callable[[Diagnostic], None] | None = None,
+    metric: bool = False,
 ) -> Iterator[Record]:
-    """A CL file's records as the post reads them: through its dialect, if it has one."""
-    return in_dialect(read_cl(path, plugins), dialect, warn)
+    """A CL file's records as the post reads them: through its dialect, if it has one
+    (``metric``: the machine's unit is the millimetre, a file's unit until UNITS says)."""
+    return in_dialect(read_cl(path, plugins), dialect, warn, metric)

@@ -100,8 +100,9 @@ class ControlCycles:
         words = (to_steps(bottom, self.step) * self.step, to_steps(plane, self.step) * self.step)
         if words != self.words or not self.active:
             block.cells[5], block.cells[R_REGISTER] = words
-            if cycle.kind == "DEEP" and cycle.step:
-                block.cells[PECK_REGISTER] = cycle.step
+            if cycle.kind == "DEEP":
+                # no STEP: one pass, and G83 still needs its Q (the whole depth)
+                block.cells[PECK_REGISTER] = cycle.step or cycle.depth
             if cycle.kind == "FACE" or cycle.dwell:
                 # FACE is G82, which takes its P even when 0 (LinuxCNC refuses G82 without)
                 register = int(machine.number_option(57))

@@ -113,7 +113,8 @@ def verify(
 ) -> Verification:
     machine = cl_machine(cl_file, plugins, machine_key)
     spoken = choose_dialect(cl_file, plugins, dialect)  # read as the post reads it
-    path = cl_path(read_in_dialect(cl_file, plugins, spoken), machine)
+    metric = machine.number_option(138) == 1
+    path = cl_path(read_in_dialect(cl_file, plugins, spoken, None, metric), machine)
     reading = interpret(tape_path, diameter=machine.number_option(260) == 1)
     unit = "in" if reading.units == "INCHES" else "mm"
     tolerance = tolerance_mm / 25.4 if unit == "in" else tolerance_mm

@@ -1,0 +1,115 @@
+"""Siemens NX CLSF (shared/corpus/dialects.md): its words mapped onto the post's.
+
+=========================================  ================================================
+NX writes                                  the post reads
+=========================================  ================================================
+``TOOL PATH/operation,TOOL,name``          ``PPRINT/operation name`` (the listing)
+``TLDATA/MILL,d,r,length,...``             ``CUTTER/d,r`` (the tool list, verify's tools)
+``MSYS/x0,y0,z0,xi,xj,xk,yi,yj,yk``        nothing: the motion is in that system already
+``LOAD/TOOL,n[,ADJUST,h]``                 ``LOADTL/n[,ADJUST,h]``
+``SELECT/TOOL,n``                          nothing (the next tool)
+``CUTCOM/LEFT|RIGHT,XYPLAN``               ``CUTCOM/LEFT|RIGHT``
+``CYCLE/DRILL[,DEEP],RAPTO,r,FEDTO,d,...``  ``CYCLE/DRILL|DEEP,DEPTH,|d|,CLEAR,r,...``
+``NURBS/ KNOT/ CNTRL/``                    straight moves within INTOL (core/cl/nurbs.py)
+``PAINT/...``, ``END-OF-PATH``             nothing (display; the path's end)
+=========================================  ================================================
+
+The first GOTO of a path carries the tool axis; along the spindle it is three-axis motion.
+A file may end without FINI (the post warns and ends the program).
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from gecent.core.errors import InputError
+from gecent.core.hookspecs import Register, hookimpl
+from gecent.core.macros import Macros
+from gecent.core.macros.dialect import Dialect
+
+NAME = "nx"
+TITLE = "Siemens NX CLSF"
+macros = Macros()
+
+
+@macros.syntax("TOOL_PATH/$P1(),TOOL,$P2()")
+def tool_path(ctx: Any) -> None:
+    ctx.pprint(f"{ctx.p[1].name} {ctx.p[2].name}")
+
+
+@macros.syntax("TLDATA/MILL,$P1,$P2,*")
+def tool_data(ctx: Any) -> None:
+    ctx.cmd("CUTTER", ctx.p[1], ctx.p[2])
+
+
+macros.ignore("PAINT")  # the CAM system's display
+macros.ignore("END-OF-PATH")
+macros.ignore("SELECT/TOOL,?")  # the next tool
+
+
+@macros.syntax("MSYS")
+def machine_system(ctx: Any) -> None:
+    """The motion is in this system already; its origin is the work offset's business."""
+    noted = ctx.globals.setdefault("msys", set())
+    values = tuple(ctx.record.numbers())
+    if values not in noted:
+        noted.add(values)
+        origin = ", ".join(f"{v:g}" for v in values[:3])
+        ctx.warn(
+            f"MSYS: THE MOTION IS IN THE MACHINE SYSTEM AT {origin}; SET THE WORK OFFSET THERE"
+        )
+
+
+@macros.syntax("LOAD/TOOL,$P1,[ADJUST,$P2]")
+def load_tool(ctx: Any) -> None:
+    if ctx.p[2] is None:
+        ctx.cmd("LOADTL", ctx.p[1])
+    else:
+        ctx.cmd("LOADTL", ctx.p[1], "ADJUST", ctx.p[2])
+
+
+@macros.syntax("CUTCOM/$P1(LEFT,RIGHT),XYPLAN")
+def cutcom_plane(ctx: Any) -> None:
+    ctx.cmd("CUTCOM", ctx.p[1].name)
+
+
+@macros.syntax("CYCLE/$P1(DRILL,TAP,BORE,REAM,FACE),$P2*")
+def cycle(ctx: Any) -> None:
+    items = list(ctx.p[2])
+    kind = ctx.p[1].name
+    if items and getattr(items[0], "name", None) in ("DEEP", "BRKCHP"):
+        kind = "DEEP" if items.pop(0).name == "DEEP" else "BRKCHP"
+    pairs: dict[str, float] = {}
+    for index in range(0, len(items) - 1, 2):
+        word, value = items[index], items[index + 1]
+        if not hasattr(word, "name") or hasattr(value, "name"):
+            raise InputError(f"CYCLE: expected word, value pairs, found {word!s}", ctx.record.where)
+        pairs[word.name] = float(value)
+    if len(items) % 2 or "FEDTO" not in pairs:
+        raise InputError(
+            "CYCLE: FEDTO (the depth) and word, value pairs expected", ctx.record.where
+        )
+    words: list[Any] = [kind, "DEPTH", abs(pairs["FEDTO"]), "CLEAR", pairs.get("RAPTO", 0.0)]
+    if "STEP" in pairs:
+        words += ["STEP", pairs["STEP"]]
+    if pairs.get("DWELL"):
+        words += ["DWELL", pairs["DWELL"]]
+    for unit in ("MMPM", "IPM", "MMPR", "IPR"):
+        if unit in pairs:
+            words += [unit, pairs[unit]]
+    ctx.cmd("CYCLE", *words)
+
+
+def sniff(head: str) -> bool:
+    """NX writes TOOL PATH, TLDATA, MSYS, PAINT and END-OF-PATH."""
+    upper = head.upper()
+    return any(word in upper for word in ("TOOL PATH/", "\nTLDATA/", "\nMSYS/", "END-OF-PATH"))
+
+
+DIALECT = Dialect(NAME, TITLE, "shared/corpus/dialects.md: Siemens NX CLSF", sniff,
+                  tuple(macros.macros), priority=10, nurbs=True)  # fmt: skip
+
+
+@hookimpl
+def register_dialects(register: Register) -> None:
+    register(DIALECT)
