@@ -19,7 +19,7 @@ from gecent.core.cl.records import Arelem, Motion, Record, Statement, Word
 from gecent.core.cl.stream import read_cl
 from gecent.core.errors import InputError
 from gecent.core.machine.definition import MachineDefinition
-from gecent.core.macros.dialect import Dialect, read_in_dialect
+from gecent.core.macros.dialect import Dialect, in_dialect
 from gecent.core.plugins import PluginSet
 from gecent.core.units import UnitScale
 
@@ -50,11 +50,11 @@ def tool_list(
     path: str, plugins: PluginSet, machine: MachineDefinition, dialect: Dialect | None = None
 ) -> list[str]:
     """The header comments for the tools the CL file at ``path`` loads; a file in a CAM
-    dialect is read whole, through the dialect (its tool words are its own)."""
+    dialect has its own tool lines read too, through the dialect."""
     unit = "MM" if machine.number_option(138) == 1 else "IN"
-    records = (
-        _records(path, plugins) if dialect is None else read_in_dialect(path, plugins, dialect)
-    )
+    records = _records(path, plugins, dialect.tool_lines if dialect is not None else ())
+    if dialect is not None:
+        records = in_dialect(records, dialect, None)
     try:
         return [tool.comment(unit) for tool in listed_tools(records, machine)]
     except InputError:
@@ -134,16 +134,19 @@ def _after(statement: Statement, name: str) -> float | None:
     return None
 
 
-def _wanted(line: str) -> bool:
-    """A whole one-line statement beginning with one of the words (a continued statement
-    is left to the post, which reads it whole)."""
+def _wanted(line: str, more: tuple[str, ...] = ()) -> bool:
+    """A whole one-line statement beginning with one of the words, or with one of a
+    dialect's tool lines (a continued statement is left to the post, which reads it)."""
     text = line.strip()
-    if not text or text[0] not in "LTCUltcu" or (text.endswith("$") and not text.endswith("$$")):
+    if not text or (text.endswith("$") and not text.endswith("$$")):
         return False
-    return text.upper().startswith(WANTED)
+    upper = text.upper()
+    if more and upper.startswith(more):
+        return True
+    return text[0] in "LTCUltcu" and upper.startswith(WANTED)
 
 
-def _records(path: str, plugins: PluginSet) -> Iterator[Record]:
+def _records(path: str, plugins: PluginSet, more: tuple[str, ...] = ()) -> Iterator[Record]:
     """The records that can matter: for APT source only the lines that begin with one of
     the words, parsed by the APT source reader; a binary file whole."""
     try:
@@ -157,7 +160,7 @@ def _records(path: str, plugins: PluginSet) -> Iterator[Record]:
         with open(path, encoding="utf-8", errors="replace", newline="") as handle:
             lines: list[str] = []
             for line in handle:
-                if _wanted(line):
+                if _wanted(line, more):
                     lines.append(line)
                 elif line.lstrip()[:4].upper() in _MOVES and (not lines or lines[-1] != _MOVED):
                     lines.append(_MOVED)  # one stand-in for a run of moves

@@ -55,9 +55,21 @@ def test_the_files_dialect_is_detected(name: str) -> None:
 
 
 @needs_corpus
-def test_other_files_have_no_dialect() -> None:
-    for other in ("creo/schruppen_1.ncl.1", "apt4/test1.apt", "apt4/test1.cl3"):
+def test_creo_files_are_creos_and_apt_iv_files_have_no_dialect() -> None:
+    for name in ("creo/schruppen_1.ncl.1", "creo/bohren_1.ncl.8"):
+        dialect = choose_dialect(str(SHARED / "corpus" / name), get_plugins())
+        assert dialect is not None and dialect.name == "creo"
+    for other in ("apt4/test1.apt", "apt4/test1.cl3", "apt4/test3_ppwords.apt"):
         assert choose_dialect(str(SHARED / "corpus" / other), get_plugins()) is None
+
+
+@needs_corpus
+def test_creos_cutter_comment_gives_the_tool_its_diameter(tmp_path: Path) -> None:
+    tape = tmp_path / "rough.ngc"
+    source = SHARED / "corpus" / "creo" / "schruppen_1.ncl.1"
+    done = CliRunner().invoke(main, ["post", str(source), "--machine", "linuxcnc-mill", "-o",
+                                     str(tape)])  # fmt: skip
+    assert done.exit_code == 0 and "(T1, DIAMETER 3 MM)" in tape.read_text()
 
 
 @needs_corpus

@@ -18,8 +18,17 @@ from dataclasses import dataclass, field
 from math import isclose
 from typing import Any
 
+from gecent.core.cl.apt_source import AptSourceReader
 from gecent.core.cl.nurbs import NurbsCollector
-from gecent.core.cl.records import Arelem, Circle, Motion, MotionSubtype, Record, Statement
+from gecent.core.cl.records import (
+    Arelem,
+    Circle,
+    Comment,
+    Motion,
+    MotionSubtype,
+    Record,
+    Statement,
+)
 from gecent.core.cl.stream import read_cl
 from gecent.core.errors import Diagnostic, InputError, SourcePosition
 from gecent.core.macros.engine import MacroEngine
@@ -40,6 +49,10 @@ class Dialect:
     frames: dict[str, Callable[[Statement], Matrix]] = field(default_factory=dict)
     priority: int = 50  # lower is tried first (the more specific dialects)
     nurbs: bool = False  # NURBS/KNOT/CNTRL curves become straight moves (core/cl/nurbs.py)
+    # comments that hold a statement (Creo's "$$-> CUTTER / 3.0"): read as that statement
+    comment_words: frozenset[str] = frozenset()
+    # the beginnings of the lines the tool list reads besides LOADTL, CUTTER... (uppercase)
+    tool_lines: tuple[str, ...] = ()
 
     def __post_init__(self) -> None:
         for macro in self.macros:
@@ -140,7 +153,18 @@ class DialectStage:
 
     def translate(self, records: Iterable[Record]) -> Iterator[Record]:
         nurbs: NurbsCollector | None = None
+        plain = self._plain_goto
+        goto = MotionSubtype.GOTO
         for record in records:
+            if (
+                plain
+                and type(record) is Motion
+                and record.subtype is goto
+                and nurbs is None
+                and self.frame is None
+            ):
+                yield record  # the common case, as fast as it can be
+                continue
             if nurbs is not None:
                 if isinstance(record, Statement) and nurbs.take(record):
                     continue
@@ -170,6 +194,8 @@ class DialectStage:
 
     def _translate(self, record: Record) -> Iterator[Record]:
         """One record through the frame and the dialect's macros."""
+        if isinstance(record, Comment) and self.dialect.comment_words:
+            record = self._commented(record)
         frames = self.dialect.frames
         if isinstance(record, Statement) and record.major in frames:
             rows = frames[record.major](record)
@@ -189,6 +215,24 @@ class DialectStage:
         if host.collected:
             yield from host.collected
             host.collected.clear()
+
+    def _commented(self, comment: Comment) -> Record:
+        """A comment "-> WORD / ..." whose WORD the dialect lists, as that statement."""
+        text = comment.text.lstrip()
+        if not text.startswith("->"):
+            return comment
+        statement = text[2:].strip()
+        word = statement.split("/", 1)[0].strip().upper()
+        if word not in self.dialect.comment_words:
+            return comment
+        reader = AptSourceReader(comment.file)
+        reader.number = comment.number - 1
+        read = list(reader.read_lines([statement]))
+        if len(read) != 1:
+            return comment
+        made = read[0]
+        made.line = comment.line
+        return made
 
 
 def sniff_text(path: str) -> str:

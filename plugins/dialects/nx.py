@@ -107,7 +107,8 @@ def sniff(head: str) -> bool:
 
 
 DIALECT = Dialect(NAME, TITLE, "shared/corpus/dialects.md: Siemens NX CLSF", sniff,
-                  tuple(macros.macros), priority=10, nurbs=True)  # fmt: skip
+                  tuple(macros.macros), priority=10, nurbs=True,
+                  tool_lines=("LOAD/", "TLDATA/"))  # fmt: skip
 
 
 @hookimpl

@@ -140,6 +140,7 @@ DIALECT = Dialect(
     tuple(macros.macros),
     {"CSYS": csys},
     priority=20,
+    tool_lines=("LOAD/", "UNIT/"),
 )
 
 
