@@ -110,8 +110,8 @@ def test_gecent_cl_names_the_dialect() -> None:
 
 
 def test_an_unknown_dialect_is_refused_with_the_list() -> None:
-    with pytest.raises(InputError, match=r"no dialect 'catia'.*solidworks-cam"):
-        choose_dialect("x.apt", get_plugins(), "catia")
+    with pytest.raises(InputError, match=r"no dialect 'lunch'.*solidworks-cam"):
+        choose_dialect("x.apt", get_plugins(), "lunch")
 
 
 # -- each word ------------------------------------------------------------------------------
@@ -366,3 +366,88 @@ def test_a_bad_nurbs_names_its_line(text: str, message: str) -> None:
     with pytest.raises(InputError, match=message) as refused:
         nx(text)
     assert "nx.cls:1" in str(refused.value)
+
+
+# -- CATIA V5, Mastercam (NCI to APT), Fusion: files in their documented forms -----------------
+# (tests/data/dialect_*: written for these tests from the vendors' documented output, issue 19
+# research: CATIA's sequence tags past column 72 and TLON,GOFWD circle, Mastercam's LOAD/TOOL
+# and unit-first SPINDL, Fusion's quoted PARTNO, LOADTL with four values and its cycles)
+
+DATA = Path(__file__).resolve().parent / "data"
+
+
+@pytest.mark.parametrize(
+    ("name", "dialect"),
+    [
+        ("dialect_catia.aptsource", "catia"),
+        ("dialect_mastercam.apt", "mastercam"),
+        ("dialect_fusion.apt", "fusion"),
+    ],
+)
+def test_vendor_files_are_detected(name: str, dialect: str) -> None:
+    found = choose_dialect(str(DATA / name), get_plugins())
+    assert found is not None and found.name == dialect
+
+
+@needs_rs274
+@pytest.mark.parametrize(
+    ("name", "expected"),
+    [
+        ("dialect_catia.aptsource", ["N1 T01 M06", "N5 G03 X0. Y50. I-50."]),
+        ("dialect_mastercam.apt", ["N1 T01 M06", "N5 G03 X66.625 Y70. J-2.625"]),
+        ("dialect_fusion.apt", ["N1 T01 M06", "N9 G81 X5. Y5. Z-5. F100. R2."]),
+    ],
+)
+def test_vendor_files_post_and_verify(name: str, expected: list[str], tmp_path: Path) -> None:
+    tape = tmp_path / "part.ngc"
+    runner = CliRunner()
+    posted = runner.invoke(
+        main, ["post", str(DATA / name), "--machine", "linuxcnc-mill", "-o", str(tape)]
+    )
+    assert posted.exit_code == 0, posted.output
+    lines = tape.read_text().splitlines()
+    assert all(line in lines for line in expected), lines
+    checked = runner.invoke(
+        main, ["verify", str(tape), "--cl", str(DATA / name), "--machine", "linuxcnc-mill"]
+    )
+    assert checked.exit_code == 0, checked.output
+
+
+def test_a_gofwd_circle_without_indirv_names_its_line(tmp_path: Path) -> None:
+    source = tmp_path / "m.apt"
+    source.write_text(
+        "$$MasterCAM NCI to APT Source CLFile Converter\nUNITS/MM\nFROM/0,0,0\n"
+        "TLON,GOFWD/ (CIRCLE/ 0,0,0,5),ON,(LINE/ 0,0,0,5,0,0)\nFINI\n"
+    )
+    with pytest.raises(InputError, match=r"m\.apt:4.*needs INDIRV"):
+        post(str(source), get_plugins(), "linuxcnc-mill")
+
+
+def test_catia_lines_are_read_to_column_72() -> None:
+    from gecent.core.cl.apt_source import read_apt_source
+
+    records = list(read_apt_source(str(DATA / "dialect_catia.aptsource"), 72))
+    gotos = [r for r in records if isinstance(r, Motion)]
+    assert gotos[0].points == ((50.0, 0.0, 10.0),)  # "PT 1" past column 72 is not read
+    with pytest.raises(InputError, match="expected ',' between values"):
+        list(read_apt_source(str(DATA / "dialect_catia.aptsource")))
+
+
+def test_fusion_words() -> None:
+    from gecent.plugins.dialects.fusion import DIALECT as FUSION
+
+    text = (
+        "PARTNO/'BRACKET'\nPPRINT/'ROUGH'\nLOADTL/1,0,50,1\nLOADTL/2,0,50,0\n"
+        "MOVARC/0,0,0,0,0,-1,5,ANGLE,90\nCUTCOM/ON\nMODE/MILL\n"
+        "CYCLE/DEEP, 12, INCR, 2, MMPM, 100, 3, RAPTO, 1\n"
+        "CYCLE/BORE, 8, MMPM, 50, 2, 0.1, ORIENT, 0\n"
+    )
+    records = AptSourceReader("f.apt").read_lines(text.splitlines(keepends=True))
+    made = list(DialectStage(FUSION).translate(records))
+    assert statements(made) == [
+        "PARTNO BRACKET", "PPRINT ROUGH", "LOADTL/1,ADJUST,1", "LOADTL/2",
+        "CYCLE/DEEP,DEPTH,12,CLEAR,3,STEP,2,RAPTO,1,MMPM,100",
+        "CYCLE/BORE,DEPTH,8,CLEAR,2,MMPM,50",
+    ]  # fmt: skip
+    circles = [r for r in made if isinstance(r, Circle)]
+    assert circles[0].values == (0.0, 0.0, 0.0, 0.0, 0.0, -1.0, 5.0)

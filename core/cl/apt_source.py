@@ -41,7 +41,8 @@ from gecent.core.cl.vocabulary import vocabulary
 from gecent.core.errors import InputError, SourcePosition
 
 TEXT_MAJORS = frozenset({"PARTNO", "PPRINT", "INSERT"})
-TEXT_LINES = TEXT_MAJORS | {"REMARK"}  # the rest of the line is text (REMARK: a comment)
+# the rest of the line is text: REMARK a comment, TPRINT a tool's name (CATIA, Mastercam)
+TEXT_LINES = TEXT_MAJORS | {"REMARK", "TPRINT"}
 _MOTION = {"FROM": MotionSubtype.FROM, "GOTO": MotionSubtype.GOTO, "GODLTA": MotionSubtype.GODLTA}
 _ARELEM = {"INTOL": 4, "OUTTOL": 5, "CUTTER": 6}
 # Flag words an APT processor turns into type-6000 records (001 L3569-3576): subtype, item 4.
@@ -60,6 +61,8 @@ _TOKEN = re.compile(
 _NUMBER_ITEM = r"\s*[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?\s*"
 _NUMBER_LIST = re.compile(rf"{_NUMBER_ITEM}(?:,{_NUMBER_ITEM})*\Z", re.ASCII)
 _MAJOR = re.compile(r"\s*((?:[A-Za-z]|\d+[A-Za-z])[A-Za-z0-9_]*)", re.ASCII)
+# TLON,GOFWD/: words joined by commas up to the slash
+_LEADING = re.compile(r"((?:\s*,\s*[A-Za-z][A-Za-z0-9_]*)+)\s*/", re.ASCII)
 # a major word of several: END-OF-PATH (hyphens), TOOL PATH/ (a blank, before the slash)
 _MORE_MAJOR = re.compile(
     r"(?:-([A-Za-z][A-Za-z0-9_]*))|(?:[ \t]+([A-Za-z][A-Za-z0-9_]*)(?=\s*(?:/|\Z)))", re.ASCII
@@ -96,8 +99,9 @@ class _Line:
 class AptSourceReader:
     """Parse one APT source CL file into records."""
 
-    def __init__(self, file: str) -> None:
+    def __init__(self, file: str, columns: int | None = None) -> None:
         self.file = file
+        self.columns = columns  # CATIA: columns past 72 hold sequence tags, not data
         self.multiax = False
         self.number = 0
         self._vocabulary = vocabulary()
@@ -110,7 +114,10 @@ class AptSourceReader:
         one_line_goto = _ONE_LINE_GOTO.match
         pending: _Line | None = None
         pending_kind = "statement"
+        columns = self.columns
         for number, raw in enumerate(lines, start=1):
+            if columns is not None and len(raw.rstrip("\r\n")) > columns:
+                raw = raw[:columns] + "\n"
             if pending is None and (found := one_line_goto(raw)) is not None and not self.multiax:
                 x, y, z = found.groups()
                 self.number += 1
@@ -191,7 +198,7 @@ class AptSourceReader:
         line = logical.line
         if major == "REMARK":  # an APT comment statement
             return Comment(self.file, line, self.number, text[rest_at:].strip())
-        if major in TEXT_MAJORS:
+        if major in TEXT_LINES:
             body = text[rest_at:].strip()
             if body.startswith("/"):
                 body = body[1:].strip()
@@ -205,6 +212,23 @@ class AptSourceReader:
                 logical, rest_at, "an assignment is APT part-program geometry, not CL data"
             )
         args: list[Arg] = []
+        if stripped.startswith(","):
+            # CATIA's CHANNEL,1 (no slash) and TLON,GOFWD/ (the last word is the major, the
+            # ones before lead its arguments)
+            found = _LEADING.match(stripped)
+            if found is not None:
+                leading = [major, *found.group(1).replace(" ", "").upper().split(",")[1:-1]]
+                major = found.group(1).replace(" ", "").upper().split(",")[-1]
+                start = rest_at + len(rest) - len(stripped) + found.end()
+                words: list[Arg] = [Word(w, self._vocabulary.minor_code(w)) for w in leading]
+                if "(" in text[start:]:  # nested geometry: kept as text for a dialect
+                    return Statement(
+                        self.file, logical.line, self.number, major,
+                        self._vocabulary.major_code(major), tuple(words), text[start:].strip(),
+                    )  # fmt: skip
+                return self._record(logical, major, [*words, *self._arguments(logical, start)])
+            args = self._arguments(logical, rest_at + len(rest) - len(stripped) + 1)
+            return self._record(logical, major, args)
         if stripped:
             if not stripped.startswith("/"):
                 raise self._error(
@@ -316,9 +340,10 @@ def text_encoding(path: str) -> str:
     return "utf-8-sig" if bom else "utf-8"
 
 
-def read_apt_source(path: str) -> Iterator[Record]:
-    """Stream the records of an APT source CL file."""
-    reader = AptSourceReader(path)
+def read_apt_source(path: str, columns: int | None = None) -> Iterator[Record]:
+    """Stream the records of an APT source CL file (``columns``: read no further along a
+    line, for sequence tags past column 72)."""
+    reader = AptSourceReader(path, columns)
     try:
         encoding = text_encoding(path)
         with open(path, encoding=encoding, errors="strict", newline="") as handle:

@@ -6,11 +6,10 @@ from __future__ import annotations
 from collections.abc import Callable, Iterator
 
 from gecent.core.cl.records import Record
-from gecent.core.cl.stream import read_cl
 from gecent.core.errors import Diagnostic
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.machine.selection import first_machin, resolve_machine
-from gecent.core.macros.dialect import choose_dialect, read_in_dialect
+from gecent.core.macros.dialect import choose_dialect, read_in_dialect, read_raw
 from gecent.core.motion.guard import DEFAULT_MAX_SEGMENTS
 from gecent.core.output.sinks import Sinks
 from gecent.core.plugins import PluginSet
@@ -36,7 +35,7 @@ def post(
     each warning as it is made (none: the result keeps them). ``dialect`` forces the CAM
     dialect (core/macros/dialect.py; "none" for none), else the file's own is detected."""
     spoken = choose_dialect(path, plugins, dialect)
-    request, notes = first_machin(read_cl(path, plugins))
+    request, notes = first_machin(read_raw(path, plugins, spoken))
     machine = resolve_machine(plugins, machine_override, request)
     run = Run(
         machine,

@@ -18,7 +18,7 @@ from dataclasses import dataclass, field
 from math import isclose
 from typing import Any
 
-from gecent.core.cl.apt_source import AptSourceReader
+from gecent.core.cl.apt_source import AptSourceReader, read_apt_source
 from gecent.core.cl.nurbs import NurbsCollector
 from gecent.core.cl.records import (
     Arelem,
@@ -53,6 +53,9 @@ class Dialect:
     comment_words: frozenset[str] = frozenset()
     # the beginnings of the lines the tool list reads besides LOADTL, CUTTER... (uppercase)
     tool_lines: tuple[str, ...] = ()
+    columns: int | None = None  # read no further along a line (CATIA: 72, tags after)
+    # the macros see the tool's CL position in ``ctx.globals["position"]`` (APT geometry)
+    track_position: bool = False
 
     def __post_init__(self) -> None:
         for macro in self.macros:
@@ -163,6 +166,8 @@ class DialectStage:
                 and nurbs is None
                 and self.frame is None
             ):
+                if self.dialect.track_position:
+                    self._follow(record)
                 yield record  # the common case, as fast as it can be
                 continue
             if nurbs is not None:
@@ -206,6 +211,8 @@ class DialectStage:
         elif self._plain_goto and type(record) is Motion and record.subtype is MotionSubtype.GOTO:
             yield record
             return
+        if self.dialect.track_position and isinstance(record, Motion):
+            self._follow(record)
         if not self.table.candidates(record):
             yield record
             return
@@ -215,6 +222,16 @@ class DialectStage:
         if host.collected:
             yield from host.collected
             host.collected.clear()
+
+    def _follow(self, record: Motion) -> None:
+        """Where the tool is (CL units), for macros that work from it."""
+        last = record.points[-1]
+        if record.subtype is MotionSubtype.GODLTA:
+            delta = last if len(last) >= 3 else (0.0, 0.0, last[0])
+            x, y, z = self.engine.globals.get("position", (0.0, 0.0, 0.0))
+            self.engine.globals["position"] = (x + delta[0], y + delta[1], z + delta[2])
+        else:
+            self.engine.globals["position"] = tuple(last[:3])
 
     def _commented(self, comment: Comment) -> Record:
         """A comment "-> WORD / ..." whose WORD the dialect lists, as that statement."""
@@ -293,4 +310,12 @@ def read_in_dialect(
 ) -> Iterator[Record]:
     """A CL file's records as the post reads them: through its dialect, if it has one
     (``metric``: the machine's unit is the millimetre, a file's unit until UNITS says)."""
-    return in_dialect(read_cl(path, plugins), dialect, warn, metric)
+    return in_dialect(read_raw(path, plugins, dialect), dialect, warn, metric)
+
+
+def read_raw(path: str, plugins: Any, dialect: Dialect | None) -> Iterator[Record]:
+    """A CL file's records before its dialect's words are mapped, read as the dialect
+    wants its lines read (CATIA: to column 72)."""
+    if dialect is not None and dialect.columns is not None and sniff_text(path):
+        return read_apt_source(path, dialect.columns)
+    return read_cl(path, plugins)

@@ -6,10 +6,9 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from gecent.core.cl.records import Statement
-from gecent.core.cl.stream import read_cl
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.machine.selection import apply_machin_options, first_machin, resolve_machine
-from gecent.core.macros.dialect import choose_dialect, read_in_dialect
+from gecent.core.macros.dialect import choose_dialect, read_in_dialect, read_raw
 from gecent.core.plugins import PluginSet
 from gecent.core.verify.clpath import cl_path
 from gecent.core.verify.compare import AXIS_NAMES, Comparison, compare
@@ -92,11 +91,14 @@ class Verification:
 
 
 def cl_machine(
-    cl_file: str, plugins: PluginSet, machine_key: str | MachineDefinition | None
+    cl_file: str,
+    plugins: PluginSet,
+    machine_key: str | MachineDefinition | None,
+    dialect: str | None = None,
 ) -> MachineDefinition:
     """The machine a CL file is posted on: --machine, else its MACHIN/GECENT with the
     statement's OPTAB changes and LINEAR/LINCIR, as the post chooses it."""
-    request, _ = first_machin(read_cl(cl_file, plugins))
+    request, _ = first_machin(read_raw(cl_file, plugins, choose_dialect(cl_file, plugins, dialect)))
     machine = resolve_machine(plugins, machine_key, request)
     if request is not None:  # the post applies its OPTAB changes to the machine it runs on
         machine = apply_machin_options(machine, request)[0]
@@ -111,7 +113,7 @@ def verify(
     tolerance_mm: float = DEFAULT_TOLERANCE_MM,
     dialect: str | None = None,
 ) -> Verification:
-    machine = cl_machine(cl_file, plugins, machine_key)
+    machine = cl_machine(cl_file, plugins, machine_key, dialect)
     spoken = choose_dialect(cl_file, plugins, dialect)  # read as the post reads it
     metric = machine.number_option(138) == 1
     path = cl_path(read_in_dialect(cl_file, plugins, spoken, None, metric), machine)
