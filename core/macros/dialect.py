@@ -86,6 +86,23 @@ def rigid(statement: Statement, rows: Matrix) -> Matrix:
     return rows
 
 
+def note_once(ctx: Any, word: str, why: str) -> None:
+    """A word the dialect ignores, said once per file in the listing."""
+    noted = ctx.globals.setdefault("noted", set())
+    if word not in noted:
+        noted.add(word)
+        ctx.warn(f"{word} IGNORED: {why}")
+
+
+def ignore_noted(macros: Any, sdl: str, why: str) -> None:
+    """A user-defined macro that ignores what it matches, with a note once per word."""
+
+    def ignored(ctx: Any) -> None:
+        note_once(ctx, getattr(ctx.record, "major", sdl), why)
+
+    macros.syntax(sdl, name=f"ignore {sdl}")(ignored)
+
+
 IDENTITY: Matrix = ((1.0, 0.0, 0.0, 0.0), (0.0, 1.0, 0.0, 0.0), (0.0, 0.0, 1.0, 0.0))
 
 

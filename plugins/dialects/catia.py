@@ -24,23 +24,18 @@ from typing import Any
 
 from gecent.core.hookspecs import Register, hookimpl
 from gecent.core.macros import Macros
-from gecent.core.macros.dialect import Dialect
+from gecent.core.macros.dialect import Dialect, ignore_noted
 from gecent.plugins.dialects.gofwd import circle_move, indirv
 
 macros = Macros()
-macros.ignore("CHANNEL")
-macros.ignore("AUTOPS")
-macros.ignore("MODE")
+ignore_noted(macros, "CHANNEL", "ONE CHANNEL HERE")
+macros.ignore("AUTOPS")  # (part of the GOFWD circle form)
+ignore_noted(macros, "MODE", "THE MACHINE'S MODE IS ITS OWN")
 macros.syntax("INDIRV/$P1,$P2,$P3", name="indirv")(indirv)
 macros.syntax("GOFWD/TLON,*", name="circle")(circle_move)
 
 
-@macros.syntax("SWITCH/*")
-def switch(ctx: Any) -> None:
-    noted = ctx.globals.setdefault("noted", set())
-    if "SWITCH" not in noted:
-        noted.add("SWITCH")
-        ctx.warn("SWITCH IS A CATIA PP-TABLE WORD; IGNORED")
+ignore_noted(macros, "SWITCH/*", "A CATIA PP-TABLE WORD")
 
 
 @macros.syntax("TPRINT/$P1''")

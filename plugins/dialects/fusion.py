@@ -24,7 +24,7 @@ from typing import Any
 from gecent.core.errors import InputError
 from gecent.core.hookspecs import Register, hookimpl
 from gecent.core.macros import Macros
-from gecent.core.macros.dialect import Dialect
+from gecent.core.macros.dialect import Dialect, ignore_noted
 
 NAME = "fusion"
 TITLE = "Autodesk Fusion ISO 4343 APT"
@@ -62,8 +62,8 @@ def movarc(ctx: Any) -> None:
     ctx.cmd("CIRCLE", *(ctx.p[n] for n in range(1, 8)))
 
 
-macros.ignore("CUTCOM/ON")
-macros.ignore("MODE/()")
+macros.ignore("CUTCOM/ON")  # (CUTCOM/LEFT or RIGHT follows)
+ignore_noted(macros, "MODE/()", "THE MACHINE'S MODE IS ITS OWN")
 
 
 @macros.syntax("CYCLE/$P1(DRILL,DEEP,BRKCHP,TAP,BORE,REAM,FACE),$P2*")

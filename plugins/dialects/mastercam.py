@@ -23,12 +23,12 @@ from typing import Any
 
 from gecent.core.hookspecs import Register, hookimpl
 from gecent.core.macros import Macros
-from gecent.core.macros.dialect import Dialect
+from gecent.core.macros.dialect import Dialect, ignore_noted
 from gecent.plugins.dialects.gofwd import circle_move, indirv
 
 macros = Macros()
-macros.ignore("MODE")
-macros.ignore("AUTOPS")
+ignore_noted(macros, "MODE", "ARCS ARE READ IN XY")
+macros.ignore("AUTOPS")  # (part of the GOFWD circle form)
 macros.syntax("INDIRV/$P1,$P2,$P3", name="indirv")(indirv)
 macros.syntax("GOFWD/TLON,*", name="circle")(circle_move)
 

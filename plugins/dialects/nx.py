@@ -25,7 +25,7 @@ from typing import Any
 from gecent.core.errors import InputError
 from gecent.core.hookspecs import Register, hookimpl
 from gecent.core.macros import Macros
-from gecent.core.macros.dialect import Dialect
+from gecent.core.macros.dialect import Dialect, ignore_noted
 
 NAME = "nx"
 TITLE = "Siemens NX CLSF"
@@ -42,9 +42,9 @@ def tool_data(ctx: Any) -> None:
     ctx.cmd("CUTTER", ctx.p[1], ctx.p[2])
 
 
-macros.ignore("PAINT")  # the CAM system's display
-macros.ignore("END-OF-PATH")
-macros.ignore("SELECT/TOOL,?")  # the next tool
+ignore_noted(macros, "PAINT", "NX DISPLAY ONLY")
+macros.ignore("END-OF-PATH")  # the path's end: nothing to say
+ignore_noted(macros, "SELECT/TOOL,?", "THE NEXT TOOL, FOR A CHANGER THAT STAGES IT")
 
 
 @macros.syntax("MSYS")
@@ -90,8 +90,9 @@ def cycle(ctx: Any) -> None:
             "CYCLE: FEDTO (the depth) and word, value pairs expected", ctx.record.where
         )
     words: list[Any] = [kind, "DEPTH", abs(pairs["FEDTO"]), "CLEAR", pairs.get("RAPTO", 0.0)]
-    if "STEP" in pairs:
-        words += ["STEP", pairs["STEP"]]
+    step = pairs.get("STEP", pairs.get("INCR"))  # the peck, by either name
+    if step:
+        words += ["STEP", step]
     if pairs.get("DWELL"):
         words += ["DWELL", pairs["DWELL"]]
     for unit in ("MMPM", "IPM", "MMPR", "IPR"):

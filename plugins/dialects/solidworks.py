@@ -28,7 +28,7 @@ from gecent.core.cl.records import Statement
 from gecent.core.errors import InputError
 from gecent.core.hookspecs import Register, hookimpl
 from gecent.core.macros import Macros
-from gecent.core.macros.dialect import Dialect, Matrix, rigid
+from gecent.core.macros.dialect import Dialect, Matrix, ignore_noted, rigid
 
 NAME = "solidworks-cam"
 TITLE = "SolidWorks CAM"
@@ -57,9 +57,7 @@ def load_tool(ctx: Any) -> None:
     ctx.cmd("LOADTL", ctx.p[1])
 
 
-@macros.syntax("SELECT/TOOL,$P1")
-def select_tool(ctx: Any) -> None:
-    """The next tool, staged: nothing for the post itself."""
+ignore_noted(macros, "SELECT/TOOL,?", "THE NEXT TOOL, FOR A CHANGER THAT STAGES IT")
 
 
 @macros.syntax("INSERT/$P1''")
