@@ -36,6 +36,12 @@ class NurbsCurve:
                 "(knots = points + degree + 1)",
                 where,
             )
+        if len(points) < degree + 1:
+            raise InputError(
+                f"NURBS: {len(knots)} knots and {len(points)} CNTRL points make degree {degree}, "
+                f"which needs {degree + 1} points",
+                where,
+            )
         if any(b < a for a, b in pairwise(knots)):
             raise InputError("NURBS: the knots must not decrease", where)
         for point in points:
