@@ -32,7 +32,7 @@ from gecent.core.errors import (
 )
 from gecent.core.families import FAMILIES, MachinePack
 from gecent.core.machine.definition import MachineDefinition
-from gecent.core.macros.dialect import choose_dialect, in_dialect
+from gecent.core.macros.dialect import choose_dialect, in_dialect, read_raw
 from gecent.core.macros.files import load_macro_file
 from gecent.core.macros.table import with_macros
 from gecent.core.motion.guard import DEFAULT_MAX_SEGMENTS
@@ -427,7 +427,8 @@ def cl_command(
 
     plugins = _plugins()
     spoken = choose_dialect(input_path, plugins, dialect)
-    records = in_dialect(read_cl(input_path, plugins, _layout(in_layout)), spoken, None)
+    raw = read_cl(input_path, plugins, _layout(in_layout)) if in_layout else None
+    records = in_dialect(raw or read_raw(input_path, plugins, spoken), spoken, None)
     heading = None
     if spoken is not None:
         how = "given" if dialect else "detected"

@@ -336,6 +336,11 @@ class Run(Elements):
                 handler(self, record)
             elif record.major in vocabulary().gecent_majors:
                 raise NotYetSupported(f"{record.major} statement", record.where)
+            elif record.major in CURVE_WORDS:  # motion the post would miss: never disregarded
+                raise NotYetSupported(
+                    f"{record.major}: NURBS motion outside a dialect that reads it (--dialect nx)",
+                    record.where,
+                )
             else:  # "not recognized ... therefore, disregarded" (001 L3203-3205)
                 self.warn(Diagnostic(f"{record.major} {UNKNOWN_WORD}", record.where))
         elif isinstance(record, Arelem):
@@ -497,6 +502,7 @@ def _units(run: Post, statement: Statement) -> None:
     run.units.set_units(statement)
 
 
+CURVE_WORDS = frozenset({"NURBS", "KNOT", "CNTRL", "SPLINE", "BSPLINE"})
 AFTER_END = "END OR RESET HAS NOT BEEN FOLLOWED BY A FROM POINT."  # comment 47 (L34080)
 UNKNOWN_WORD = "IS NOT A GECENT III POSTPROCESSOR WORD; STATEMENT DISREGARDED"
 

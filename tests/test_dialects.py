@@ -14,7 +14,7 @@ from gecent.core.cl.apt_source import AptSourceReader
 from gecent.core.cl.records import Circle, Motion, Record, Statement
 from gecent.core.cli import main
 from gecent.core.dispatch.post import post
-from gecent.core.errors import InputError
+from gecent.core.errors import InputError, NotYetSupported
 from gecent.core.macros.dialect import DialectStage, choose_dialect
 from gecent.core.output.tape import tape_image
 from gecent.core.plugins import get_plugins
@@ -157,19 +157,36 @@ def test_a_cycle_without_its_depth_names_the_line() -> None:
         translated("CYCLE/DRILL,MMPM,100,RAPTO,3\n")
 
 
-def test_csys_moves_the_part_into_the_machine() -> None:
-    """CSYS/-1,0,0,456.35,0,-1,0,197.03,0,0,1,0: a half turn about Z and a shift; points,
-    arc centres and the tool axis turn with it; the identity ends it."""
+def test_csys_that_turns_the_tool_axis_moves_the_part_into_the_machine() -> None:
+    """CSYS/-1,0,0,10,0,1,0,20,0,0,-1,30 (a flipped setup, shifted): points, arc centres and
+    the tool axis turn with it; the identity ends it."""
     made = translated(
-        "CSYS/-1.,0,0,456.35,0,-1.,0,197.03,0,0,1.,0\nGOTO/295.4,106.3,25.\n"
-        "CIRCLE/300,100,0,0,0,1\nGOTO/10,20,30,0,0,1\nCSYS/1.,0,0,0,0,1.,0,0,0,0,1.,0\n"
+        "CSYS/-1.,0,0,10.,0,1.,0,20.,0,0,-1.,30.\nGOTO/5.,6.,-7.\n"
+        "CIRCLE/1,2,-3,0,0,-1\nGOTO/1,2,3,0,0,-1\nCSYS/1.,0,0,0,0,1.,0,0,0,0,1.,0\n"
         "GOTO/1,2,3\n"
     )
     motions = [r for r in made if isinstance(r, Motion | Circle)]
-    assert motions[0].points[0] == pytest.approx((160.95, 90.73, 25.0))  # type: ignore[union-attr]
-    assert motions[1].values == pytest.approx((156.35, 97.03, 0.0, 0.0, 0.0, 1.0))  # type: ignore[union-attr]
-    assert motions[2].points[0] == pytest.approx((446.35, 177.03, 30.0, 0.0, 0.0, 1.0))  # type: ignore[union-attr]
+    assert motions[0].points[0] == pytest.approx((5.0, 26.0, 37.0))  # type: ignore[union-attr]
+    assert motions[1].values == pytest.approx((9.0, 22.0, 33.0, 0.0, 0.0, 1.0))  # type: ignore[union-attr]
+    assert motions[2].points[0] == pytest.approx((9.0, 22.0, 27.0, 0.0, 0.0, 1.0))  # type: ignore[union-attr]
     assert motions[3].points[0] == (1.0, 2.0, 3.0)  # type: ignore[union-attr]
+
+
+def test_csys_that_turns_about_z_leaves_the_points() -> None:
+    """manufacture3-bottom's setups turned about Z: their points are in the setup's frame
+    already (applied, three setups would drill one place three times)."""
+    made = translated("CSYS/-1.,0,0,456.35,0,-1.,0,197.03,0,0,1.,0\nGOTO/295.4,106.3,25.\n")
+    assert [r.points for r in made if isinstance(r, Motion)] == [((295.4, 106.3, 25.0),)]
+
+
+@needs_corpus
+def test_manufacture3_drills_each_hole_group_once(tmp_path: Path) -> None:
+    tape = tmp_path / "m3.ngc"
+    source = SOLIDWORKS / "manufacture3-bottom.apt"
+    CliRunner().invoke(main, ["post", str(source), "--machine", "linuxcnc-mill", "-o", str(tape)])
+    starts = [line.split(" F")[0].split(" ", 2)[2] for line in tape.read_text().splitlines()
+              if " G83 " in line or " G81 " in line]  # fmt: skip
+    assert len(starts) == len(set(starts)) >= 3  # every cycle starts at a hole of its own
 
 
 @pytest.mark.parametrize(
@@ -451,3 +468,67 @@ def test_fusion_words() -> None:
     ]  # fmt: skip
     circles = [r for r in made if isinstance(r, Circle)]
     assert circles[0].values == (0.0, 0.0, 0.0, 0.0, 0.0, -1.0, 5.0)
+
+
+# -- what the review found ----------------------------------------------------------------
+
+
+def test_two_gofwd_arcs_in_a_row_each_turn_their_own_way(tmp_path: Path) -> None:
+    source = tmp_path / "two.apt"
+    source.write_text(
+        "$$MasterCAM NCI to APT Source CLFile Converter\nUNITS/MM\nFROM/50,0,-2\nFEDRAT/100\n"
+        "INDIRV/0,1,0\nTLON,GOFWD/ (CIRCLE/ 0,0,-2,50),ON,2,INTOF,(LINE/ 0,0,-2,-50,0,-2)\n"
+        "INDIRV/0,-1,0\nTLON,GOFWD/ (CIRCLE/ 0,0,-2,50),ON,2,INTOF,(LINE/ 0,0,-2,50,0,-2)\nFINI\n"
+    )
+    tape = tape_image(post(str(source), get_plugins(), "linuxcnc-mill").blocks)
+    assert tape.count("G03") == 1 and "X-50." in tape and "G02" not in tape  # a full circle
+
+
+def test_nx_rtrcto() -> None:
+    made = nx(
+        "CYCLE/DRILL,RAPTO,3,FEDTO,-10,RTRCTO,20,MMPM,100\n"
+        "CYCLE/DRILL,RAPTO,3,FEDTO,-10,RTRCTO,AUTO,MMPM,100\n"
+    )
+    assert statements(made) == [
+        "CYCLE/DRILL,DEPTH,10,CLEAR,3,RETURN,0,MMPM,100",
+        "CYCLE/DRILL,DEPTH,10,CLEAR,3,MMPM,100",
+    ]
+
+
+def test_nx_is_not_detected_from_a_comment(tmp_path: Path) -> None:
+    plain = tmp_path / "plain.apt"
+    plain.write_text("$$ OPERATION 1: SEE TOOL PATH/SHEET 2\nCYCLE/DRILL,DEPTH,10,CLEAR,3\n")
+    assert choose_dialect(str(plain), get_plugins()) is None
+
+
+def test_gecent_cl_reads_catia_to_column_72() -> None:
+    shown = CliRunner().invoke(main, ["cl", str(DATA / "dialect_catia.aptsource")])
+    assert shown.exit_code == 0 and shown.output.startswith("DIALECT catia")
+
+
+def test_a_statement_without_its_slash_is_still_an_error() -> None:
+    with pytest.raises(InputError, match="expected '/' after COOLNT"):
+        list(AptSourceReader("x").read_lines(["COOLNT OFF\n"]))
+
+
+def test_nurbs_knots_all_the_same_are_refused() -> None:
+    with pytest.raises(InputError, match="no span"):
+        nx("NURBS/\nKNOT/0,0,0,0,0,0\nCNTRL/0,0,0\nCNTRL/1,1,1\nCNTRL/2,0,0\n")
+
+
+def test_a_control_drill_with_a_dwell_is_g82_and_a_bore_with_one_is_refused(
+    tmp_path: Path,
+) -> None:
+    head = "PARTNO T\nUNITS/MM\nFROM/0,0,10\nFEDRAT/100\n"
+    source = tmp_path / "dwell.apt"
+    source.write_text(head + "CYCLE/DRILL,DEPTH,5,CLEAR,2,DWELL,1.5,MMPM,50\nGOTO/1,1,0\n"
+                      "CYCLE/OFF\nFINI\n")  # fmt: skip
+    tape = tape_image(post(str(source), get_plugins(), "linuxcnc-mill").blocks)
+    assert "G82" in tape and "P1.5" in tape and "G81" not in tape
+    source.write_text(head + "CYCLE/BORE,DEPTH,5,CLEAR,2,DWELL,1.5,MMPM,50\nGOTO/1,1,0\nFINI\n")
+    with pytest.raises(NotYetSupported, match="CYCLE/BORE with DWELL"):
+        post(str(source), get_plugins(), "linuxcnc-mill")
+
+
+def test_solidworks_unit_inch() -> None:
+    assert statements(translated("UNIT/INCH\n")) == ["UNITS/INCHES"]

@@ -224,9 +224,11 @@ def test_a_cycle_with_a_dwell_has_its_own_type() -> None:
     def before(ctx):  # type: ignore[no-untyped-def]
         types.append(ctx.p.cycle_type)
 
-    post(HEAD + "CYCLE/BORE,DEPTH,5,CLEAR,2,DWELL,1,MMPM,50\nGOTO/10,0,0\nCYCLE/OFF\nFINI\n",
-         macros)  # fmt: skip
-    assert types == [6.0]  # BORE with dwell
+    tape, _ = post(
+        HEAD + "CYCLE/DRILL,DEPTH,5,CLEAR,2,DWELL,1,MMPM,50\nGOTO/10,0,0\nCYCLE/OFF\nFINI\n",
+        macros,
+    )
+    assert types == [2.0] and "G82" in tape  # DRILL with a dwell: the control's G82
 
 
 def test_ilook_false_ends_finfo_where_the_macro_is() -> None:

@@ -81,21 +81,26 @@ FINI
 
 
 @needs_rs274
-def test_a_file_whose_nurbs_were_skipped_fails_verify(tmp_path: Path) -> None:
+def test_a_file_whose_nurbs_no_dialect_reads_stops_and_nx_reads_it(tmp_path: Path) -> None:
+    """NURBS motion is never disregarded: plain APT stops naming the line (exit 3); read as
+    NX's, the curve becomes moves within INTOL, and verify passes."""
     source = tmp_path / "nurbs.apt"
     source.write_text(NURBS)
     tape = tmp_path / "nurbs.ngc"
     posted = CliRunner().invoke(
         main, ["post", str(source), "--machine", "linuxcnc-mill", "-o", str(tape)]
     )
-    assert posted.exit_code == 0  # the post warns and goes on, as the manual has it
-    assert "NURBS IS NOT A GECENT III POSTPROCESSOR WORD" in posted.output
-    result = CliRunner().invoke(
-        main, ["verify", str(tape), "--cl", str(source), "--machine", "linuxcnc-mill"]
+    assert posted.exit_code == 3 and "nurbs.apt:8" in posted.output
+    assert "--dialect nx" in posted.output and not tape.exists()
+    posted = CliRunner().invoke(
+        main, ["post", str(source), "--machine", "linuxcnc-mill", "-o", str(tape), "--dialect", "nx"]
     )
-    assert result.exit_code == 1, result.output
-    assert "FAILED: the CL file moves the tool by NURBS at" in result.output
-    assert "nurbs.apt:8" in result.output and "(and 5 more such records)" in result.output
+    assert posted.exit_code == 0, posted.output
+    result = CliRunner().invoke(
+        main,
+        ["verify", str(tape), "--cl", str(source), "--machine", "linuxcnc-mill", "--dialect", "nx"],
+    )
+    assert result.exit_code == 0, result.output
 
 
 @needs_rs274

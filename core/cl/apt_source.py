@@ -65,7 +65,7 @@ _MAJOR = re.compile(r"\s*((?:[A-Za-z]|\d+[A-Za-z])[A-Za-z0-9_]*)", re.ASCII)
 _LEADING = re.compile(r"((?:\s*,\s*[A-Za-z][A-Za-z0-9_]*)+)\s*/", re.ASCII)
 # a major word of several: END-OF-PATH (hyphens), TOOL PATH/ (a blank, before the slash)
 _MORE_MAJOR = re.compile(
-    r"(?:-([A-Za-z][A-Za-z0-9_]*))|(?:[ \t]+([A-Za-z][A-Za-z0-9_]*)(?=\s*(?:/|\Z)))", re.ASCII
+    r"(?:-([A-Za-z][A-Za-z0-9_]*))|(?:[ \t]+([A-Za-z][A-Za-z0-9_]*)(?=\s*/))", re.ASCII
 )
 # the reader's fast path: a whole one-line "GOTO / x, y, z" (no continuation, no comment)
 _ONE_LINE_GOTO = re.compile(

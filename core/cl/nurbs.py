@@ -49,6 +49,8 @@ class NurbsCurve:
                 raise InputError("CNTRL takes x, y, z and a weight above 0", where)
         self.degree = degree
         self.knots = tuple(float(k) for k in knots)
+        if not self.knots[degree] < self.knots[-degree - 1]:
+            raise InputError("NURBS: the knots leave the curve no span (all the same)", where)
         # homogeneous control points: (w x, w y, w z, w)
         self.points = tuple(
             (p[0] * w, p[1] * w, p[2] * w, w)

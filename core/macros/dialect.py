@@ -237,6 +237,10 @@ class DialectStage:
         host.current_record = record
         self.engine.dispatch(record)
         if host.collected:
+            if self.dialect.track_position:
+                for made in host.collected:
+                    if isinstance(made, Motion):
+                        self._follow(made)  # (a macro's own GOTO moves the tool too)
             yield from host.collected
             host.collected.clear()
 

@@ -58,6 +58,9 @@ class ControlCycles:
             raise NotYetSupported("CYCLE/DEEP's step without a Q register (REGFOR 21)", where)
         if machine.registers.formats[R_REGISTER] is None:
             raise NotYetSupported("a control cycle without an R register (REGFOR 16)", where)
+        if cycle.dwell and cycle.kind not in ("DRILL", "FACE"):
+            # G82 dwells; G83-G86 take no P (a bore with a dwell is G89, in no TABLEG cell)
+            raise NotYetSupported(f"CYCLE/{cycle.kind} with DWELL by the control's cycle", where)
 
     def hole(
         self,
@@ -94,7 +97,8 @@ class ControlCycles:
         block.position = reached
         block.cells[3] = reached[0] * self.step
         block.cells[4] = reached[1] * self.step
-        cycle_g = machine.g_code(CYCLE_TYPES[cycle.kind][1])
+        kind = "FACE" if cycle.kind == "DRILL" and cycle.dwell else cycle.kind  # G82 dwells
+        cycle_g = machine.g_code(CYCLE_TYPES[kind][1])
         assert cycle_g is not None
         block.cells[2] = cycle_g
         words = (to_steps(bottom, self.step) * self.step, to_steps(plane, self.step) * self.step)

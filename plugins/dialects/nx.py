@@ -82,8 +82,12 @@ def cycle(ctx: Any) -> None:
     pairs: dict[str, float] = {}
     for index in range(0, len(items) - 1, 2):
         word, value = items[index], items[index + 1]
+        if getattr(word, "name", "") == "RTRCTO" and getattr(value, "name", "") == "AUTO":
+            continue  # the R plane: the post's own return
         if not hasattr(word, "name") or hasattr(value, "name"):
-            raise InputError(f"CYCLE: expected word, value pairs, found {word!s}", ctx.record.where)
+            raise InputError(
+                f"CYCLE: {word!s} takes a number (word, value pairs expected)", ctx.record.where
+            )
         pairs[word.name] = float(value)
     if len(items) % 2 or "FEDTO" not in pairs:
         raise InputError(
@@ -95,6 +99,8 @@ def cycle(ctx: Any) -> None:
         words += ["STEP", step]
     if pairs.get("DWELL"):
         words += ["DWELL", pairs["DWELL"]]
+    if pairs.get("RTRCTO", 0.0) > pairs.get("RAPTO", 0.0):
+        words += ["RETURN", 0.0]  # above R: back to the level the cycle started from
     for unit in ("MMPM", "IPM", "MMPR", "IPR"):
         if unit in pairs:
             words += [unit, pairs[unit]]
@@ -103,8 +109,8 @@ def cycle(ctx: Any) -> None:
 
 def sniff(head: str) -> bool:
     """NX writes TOOL PATH, TLDATA, MSYS, PAINT and END-OF-PATH."""
-    upper = head.upper()
-    return any(word in upper for word in ("TOOL PATH/", "\nTLDATA/", "\nMSYS/", "END-OF-PATH"))
+    starts = ("TOOL PATH/", "TLDATA/", "MSYS/", "END-OF-PATH")
+    return any(line.lstrip().upper().startswith(starts) for line in head.splitlines())
 
 
 DIALECT = Dialect(NAME, TITLE, "shared/corpus/dialects.md: Siemens NX CLSF", sniff,

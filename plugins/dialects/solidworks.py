@@ -28,7 +28,7 @@ from gecent.core.cl.records import Statement
 from gecent.core.errors import InputError
 from gecent.core.hookspecs import Register, hookimpl
 from gecent.core.macros import Macros
-from gecent.core.macros.dialect import Dialect, Matrix, ignore_noted, rigid
+from gecent.core.macros.dialect import IDENTITY, Dialect, Matrix, ignore_noted, rigid
 
 NAME = "solidworks-cam"
 TITLE = "SolidWorks CAM"
@@ -49,7 +49,8 @@ def _note_once(ctx: Any, word: str) -> None:
 
 @macros.syntax("UNIT/$P1()")
 def unit(ctx: Any) -> None:
-    ctx.cmd("UNITS", ctx.p[1].name)
+    name = ctx.p[1].name
+    ctx.cmd("UNITS", {"INCH": "INCHES", "IN": "INCHES"}.get(name, name))
 
 
 @macros.syntax("LOAD/TOOL,$P1")
@@ -117,12 +118,19 @@ def vendor_words(ctx: Any) -> None:
 
 
 def csys(statement: Statement) -> Matrix:
-    """CSYS/r11,r12,r13,tx, r21,r22,r23,ty, r31,r32,r33,tz: part to machine."""
+    """CSYS/r11,r12,r13,tx, r21,r22,r23,ty, r31,r32,r33,tz: the setup's frame, part to
+    machine. Only a frame that turns the tool axis moves the points (a flipped setup: the
+    points come with the axis 0,0,-1 in part coordinates); a turn about Z alone leaves them,
+    which are in the setup's frame already (manufacture3-bottom's three drilling setups
+    would otherwise drill one place three times; docs/decisions.md)."""
     values = statement.numbers()
     if len(values) != 12 or len(values) != len(statement.args):
         raise InputError("CSYS expects 12 numbers, a 3 x 4 matrix row by row", statement.where)
     rows = tuple(tuple(values[4 * r : 4 * r + 4]) for r in range(3))
-    return rigid(statement, rows)  # type: ignore[arg-type]
+    rigid(statement, rows)  # type: ignore[arg-type]
+    if abs(rows[2][2] - 1.0) < 1e-9:  # the tool axis stays +Z
+        return IDENTITY
+    return rows  # type: ignore[return-value]
 
 
 def sniff(head: str) -> bool:
