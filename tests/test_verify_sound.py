@@ -93,7 +93,8 @@ def test_a_file_whose_nurbs_no_dialect_reads_stops_and_nx_reads_it(tmp_path: Pat
     assert posted.exit_code == 3 and "nurbs.apt:8" in posted.output
     assert "--dialect nx" in posted.output and not tape.exists()
     posted = CliRunner().invoke(
-        main, ["post", str(source), "--machine", "linuxcnc-mill", "-o", str(tape), "--dialect", "nx"]
+        main,
+        ["post", str(source), "--machine", "linuxcnc-mill", "-o", str(tape), "--dialect", "nx"],
     )
     assert posted.exit_code == 0, posted.output
     result = CliRunner().invoke(
