@@ -412,7 +412,7 @@ def test_vendor_files_are_detected(name: str, dialect: str) -> None:
     [
         ("dialect_catia.aptsource", ["N1 T01 M06", "N5 G03 X0. Y50. I-50."]),
         ("dialect_mastercam.apt", ["N1 T01 M06", "N5 G03 X66.625 Y70. J-2.625"]),
-        ("dialect_fusion.apt", ["N1 T01 M06", "N9 G81 X5. Y5. Z-5. F100. R2."]),
+        ("dialect_fusion.apt", ["N1 T01 M06", "N9 G81 X5. Y5. Z-5. F100. R5."]),
     ],
 )
 def test_vendor_files_post_and_verify(name: str, expected: list[str], tmp_path: Path) -> None:
@@ -456,16 +456,23 @@ def test_fusion_words() -> None:
     text = (
         "PARTNO/'BRACKET'\nPPRINT/'ROUGH'\nLOADTL/1,0,50,1\nLOADTL/2,0,50,0\n"
         "MOVARC/0,0,0,0,0,-1,5,ANGLE,90\nCUTCOM/ON\nMODE/MILL\n"
-        "CYCLE/DEEP, 12, INCR, 2, MMPM, 100, 3, RAPTO, 1\n"
-        "CYCLE/BORE, 8, MMPM, 50, 2, 0.1, ORIENT, 0\n"
+        "CYCLE/DEEP, 12, INCR, 2, MMPM, 100, 8, RAPTO, 3\nGOTO/1,2,-12\nGOTO/3,4,-12\n"
+        "GOTO/5,6,-20\nCYCLE/OFF\n"
+        "CYCLE/BORE, 8, MMPM, 50, 2, 0.1, ORIENT, 0\nCYCLE/OFF\n"
     )
     records = AptSourceReader("f.apt").read_lines(text.splitlines(keepends=True))
     made = list(DialectStage(FUSION).translate(records))
+    # the points are the holes' bottoms, the clearance an absolute height and RAPTO below
+    # it (the R plane at 8 - 3 = 5): the post's cycle from each hole's top; a new top
+    # restates the cycle; a cycle with no point makes nothing
     assert statements(made) == [
         "PARTNO BRACKET", "PPRINT ROUGH", "LOADTL/1,ADJUST,1", "LOADTL/2",
-        "CYCLE/DEEP,DEPTH,12,CLEAR,3,STEP,2,RAPTO,1,MMPM,100",
-        "CYCLE/BORE,DEPTH,8,CLEAR,2,MMPM,50",
+        "CYCLE/DEEP,DEPTH,12,CLEAR,5,STEP,2,RETURN,0,MMPM,100",
+        "CYCLE/DEEP,DEPTH,12,CLEAR,13,STEP,2,RETURN,0,MMPM,100",
+        "CYCLE/OFF",
     ]  # fmt: skip
+    holes = [r.points[0] for r in made if isinstance(r, Motion)]
+    assert holes == [(1.0, 2.0, 0.0), (3.0, 4.0, 0.0), (5.0, 6.0, -8.0)]
     circles = [r for r in made if isinstance(r, Circle)]
     assert circles[0].values == (0.0, 0.0, 0.0, 0.0, 0.0, -1.0, 5.0)
 

@@ -151,7 +151,7 @@ def cycle_legs(
     if cycle.return_level is None:
         back = plane
     elif cycle.return_level == 0:
-        back = first_z
+        back = max(first_z, plane)  # the start level, never below R (as a control's G98)
     else:
         back = top + cycle.return_level
     legs: list[Leg] = []

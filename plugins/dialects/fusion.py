@@ -9,7 +9,8 @@ Fusion writes                                the post reads
 ``MOVARC/cx,cy,cz,nx,ny,nz,r,ANGLE,a``       ``CIRCLE/cx,cy,cz,nx,ny,nz,r`` (the GOTO after
                                              it ends the arc)
 ``CUTCOM/ON``, ``MODE/MILL|TURN``            nothing
-``CYCLE/type,d,[INCR,s,]MMPM,f,c[,...]``     ``CYCLE/type,DEPTH,d,CLEAR,c[,STEP,s]...,MMPM,f``
+``CYCLE/type,d,[INCR,s,]MMPM,f,c[,RAPTO,r]``  ``CYCLE/type,DEPTH,d,CLEAR,R-top[,STEP,s]...``
+and its points (each the hole's bottom)       the points at the holes' tops; R = c - r
 ``CYCLE/BORE,...,ORIENT,0``                  ORIENT dropped (the spindle is not oriented)
 ===========================================  ===========================================
 
@@ -68,6 +69,8 @@ ignore_noted(macros, "MODE/()", "THE MACHINE'S MODE IS ITS OWN")
 
 @macros.syntax("CYCLE/$P1(DRILL,DEEP,BRKCHP,TAP,BORE,REAM,FACE),$P2*")
 def cycle(ctx: Any) -> None:
+    """Held until its first point: Fusion's cycle point is the hole's bottom and its
+    clearance an absolute height, so the post's cycle (from the hole's top) is made there."""
     items = list(ctx.p[2])
     numbers: list[float] = []
     pairs: dict[str, float] = {}
@@ -90,16 +93,45 @@ def cycle(ctx: Any) -> None:
             ctx.record.where,
         )
     depth, clearance = numbers
-    words: list[Any] = [ctx.p[1].name, "DEPTH", abs(depth), "CLEAR", clearance]
-    if "INCR" in pairs:
-        words += ["STEP", pairs["INCR"]]
-    for name in ("RAPTO", "DWELL"):
-        if pairs.get(name):
-            words += [name, pairs[name]]
-    for unit in UNITS:
-        if unit in pairs:
-            words += [unit, pairs[unit]]
-    ctx.cmd("CYCLE", *words)
+    ctx.globals["cycle"] = {
+        "kind": ctx.p[1].name,
+        "depth": abs(depth),
+        "plane": clearance - pairs.get("RAPTO", 0.0),  # the R plane, absolute
+        "pairs": pairs,
+        "made": None,
+    }
+
+
+@macros.syntax("CYCLE/OFF")
+def cycle_off(ctx: Any) -> None:
+    held = ctx.globals.pop("cycle", None)
+    if held is None or held["made"] is not None:
+        ctx.output()  # (a cycle with no point made nothing to end)
+
+
+@macros.syntax("GOTO/$P1,$P2,$P3,*")
+def cycle_point(ctx: Any) -> None:
+    held = ctx.globals.get("cycle")
+    if held is None:
+        ctx.output()
+        return
+    ctx.match(False)  # what this makes is the post's own CYCLE and GOTO
+    top = ctx.p[3] + held["depth"]  # the point is the hole's bottom
+    clear = held["plane"] - top
+    if held["made"] != (top, clear):
+        pairs = held["pairs"]
+        words: list[Any] = [held["kind"], "DEPTH", held["depth"], "CLEAR", clear]
+        if "INCR" in pairs:
+            words += ["STEP", pairs["INCR"]]
+        if pairs.get("DWELL"):
+            words += ["DWELL", pairs["DWELL"]]
+        words += ["RETURN", 0.0]  # back to where the cycle began (the clearance height)
+        for unit in UNITS:
+            if unit in pairs:
+                words += [unit, pairs[unit]]
+        ctx.cmd("CYCLE", *words)
+        held["made"] = (top, clear)
+    ctx.goto(ctx.p[1], ctx.p[2], top)
 
 
 def sniff(head: str) -> bool:
