@@ -539,3 +539,29 @@ def test_a_control_drill_with_a_dwell_is_g82_and_a_bore_with_one_is_refused(
 
 def test_solidworks_unit_inch() -> None:
     assert statements(translated("UNIT/INCH\n")) == ["UNITS/INCHES"]
+
+
+def test_a_value_past_catias_column_72_is_an_error() -> None:
+    from gecent.core.cl.apt_source import AptSourceReader
+
+    line = "GOTO / 1.0, 2.0, " + "3" * 60 + ".5\n"  # the number crosses column 72
+    with pytest.raises(InputError, match=r"x:1:73.*runs past column 72"):
+        list(AptSourceReader("x", 72).read_lines([line]))
+
+
+def test_gofwd_errors_are_named(tmp_path: Path) -> None:
+    head = "$$MasterCAM NCI to APT Source CLFile Converter\nUNITS/MM\nFROM/50,0,0\n"
+    source = tmp_path / "g.apt"
+    source.write_text(
+        head + "INDIRV/1,0,0\nTLON,GOFWD/ (CIRCLE/ 0,0,0,50),ON,(LINE/ 0,0,0,0,50,0)\n"
+    )
+    with pytest.raises(InputError, match="along the radius"):
+        post(str(source), get_plugins(), "linuxcnc-mill")
+    source.write_text(head + "INDIRV/0,1,0\nTLON,GOFWD/ (CIRCLE/ 0,0,0,50,ON,(LINE/ 0,0,0)\n")
+    with pytest.raises(InputError, match="GOFWD: "):
+        post(str(source), get_plugins(), "linuxcnc-mill")
+
+
+def test_a_nurbs_cut_too_fine_is_refused() -> None:
+    with pytest.raises(InputError, match="is INTOL meant so fine"):
+        nx("INTOL/1e-9\nNURBS/\nKNOT/0,0,0,1,1,1\nCNTRL/0,0,0\nCNTRL/500,500,0\nCNTRL/1000,0,0\n")

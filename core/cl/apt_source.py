@@ -117,6 +117,12 @@ class AptSourceReader:
         columns = self.columns
         for number, raw in enumerate(lines, start=1):
             if columns is not None and len(raw.rstrip("\r\n")) > columns:
+                if raw[columns - 1] not in " \t" and raw[columns] not in " \t":
+                    raise InputError(
+                        f"a value runs past column {columns}, where this CAM system's lines "
+                        "end (sequence tags follow)",
+                        SourcePosition(file, number, columns + 1),
+                    )
                 raw = raw[:columns] + "\n"
             if pending is None and (found := one_line_goto(raw)) is not None and not self.multiax:
                 x, y, z = found.groups()

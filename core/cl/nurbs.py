@@ -6,8 +6,9 @@ needed), each ``CNTRL/x,y,z[,w]`` a control point with its weight (1 when left o
 degree is the knot count less the control point count less one. The curve starts at the
 tool's position (the first control point) and the moves end on it: each chord's midpoint
 and quarter points lie within the tolerance of the curve, found by halving the parameter
-span (at most 2^16 pieces per knot span). The moves begin with one to the curve's start,
-which is the tool's position when the CAM system has put it there.
+span (at most 2^16 pieces per knot span: a tolerance that needs more is an error). The
+moves begin with one to the curve's start, which is the tool's position when the CAM
+system has put it there.
 """
 
 from __future__ import annotations
@@ -21,6 +22,7 @@ from gecent.core.errors import InputError, SourcePosition
 
 Point = tuple[float, float, float]
 MAX_DEPTH = 16
+MAX_MOVES = 100_000  # a curve cut finer than this is refused (a tolerance far too fine)
 
 
 class NurbsCurve:
@@ -47,6 +49,7 @@ class NurbsCurve:
         for point in points:
             if len(point) not in (3, 4) or (len(point) == 4 and not point[3] > 0):
                 raise InputError("CNTRL takes x, y, z and a weight above 0", where)
+        self.where = where
         self.degree = degree
         self.knots = tuple(float(k) for k in knots)
         if not self.knots[degree] < self.knots[-degree - 1]:
@@ -96,9 +99,15 @@ class NurbsCurve:
         mid = self.at(middle)
         checks = (mid, self.at((a + middle) / 2), self.at((middle + b) / 2))
         off = max(_off_chord(point, start, end) for point in checks)
-        if off <= tol or depth >= MAX_DEPTH:
+        if off <= tol:
             out.append(end)
             return
+        if depth >= MAX_DEPTH:
+            raise InputError(
+                f"NURBS: no straight moves keep within {tol:g} of the curve here (is INTOL "
+                "meant so fine?)",
+                self.where,
+            )
         self._cut(a, middle, start, mid, tol, depth + 1, out)
         self._cut(middle, b, mid, end, tol, depth + 1, out)
 
@@ -139,5 +148,11 @@ class NurbsCollector:
         where = self.opening.where
         curve = NurbsCurve(self.knots, self.points, where)
         points = tuple(curve.chords(tolerance))
+        if len(points) > MAX_MOVES:
+            raise InputError(
+                f"NURBS: {len(points)} moves to keep within {tolerance:g} of the curve (more "
+                f"than {MAX_MOVES}: is INTOL meant so fine?)",
+                where,
+            )
         opening = self.opening
         return Motion(opening.file, opening.line, opening.number, MotionSubtype.GOTO, points)

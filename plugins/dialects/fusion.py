@@ -58,7 +58,7 @@ def loadtl(ctx: Any) -> None:
         ctx.cmd("LOADTL", ctx.p[1])
 
 
-@macros.syntax("MOVARC/$P1,$P2,$P3,$P4,$P5,$P6,$P7,ANGLE,$P8")
+@macros.syntax("MOVARC/$P1,$P2,$P3,$P4,$P5,$P6,$P7,[ANGLE,$P8]")
 def movarc(ctx: Any) -> None:
     ctx.cmd("CIRCLE", *(ctx.p[n] for n in range(1, 8)))
 
@@ -92,6 +92,8 @@ def cycle(ctx: Any) -> None:
             "CYCLE: expected the depth and the clearance, and word, value pairs",
             ctx.record.where,
         )
+    if "ORIENT" in pairs or "ORIANT" in pairs:
+        ctx.warn("CYCLE/BORE: ORIENT AND ITS SHIFT NOT KEPT: A PLAIN BORE, FED OUT")
     depth, clearance = numbers
     ctx.globals["cycle"] = {
         "kind": ctx.p[1].name,

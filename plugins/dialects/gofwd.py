@@ -51,6 +51,9 @@ def circle_move(ctx: Any) -> None:
         )
     x, y, _ = ctx.globals.get("position", (xc + radius, yc, zc))
     turn = (x - xc) * tangent[1] - (y - yc) * tangent[0]
+    if abs(turn) < 1e-9:
+        raise InputError("GOFWD: INDIRV points along the radius, so the arc has no sense",
+                         record.where)  # fmt: skip
     axis = 1.0 if turn > 0 else -1.0  # counterclockwise about +Z, else clockwise
     ctx.cmd("CIRCLE", xc, yc, zc, 0.0, 0.0, axis, radius)
     ctx.goto(*ends[3:6])
