@@ -565,3 +565,9 @@ def test_gofwd_errors_are_named(tmp_path: Path) -> None:
 def test_a_nurbs_cut_too_fine_is_refused() -> None:
     with pytest.raises(InputError, match="is INTOL meant so fine"):
         nx("INTOL/1e-9\nNURBS/\nKNOT/0,0,0,1,1,1\nCNTRL/0,0,0\nCNTRL/500,500,0\nCNTRL/1000,0,0\n")
+
+
+def test_nx_hole_tool_data_and_a_turned_msys() -> None:
+    made = nx("TLDATA/DRILL,8.5,118,60\nMSYS/0,0,0,0,1,0,-1,0,0\n")
+    cutters = [r for r in made if not isinstance(r, Statement)]
+    assert [type(r).__name__ for r in cutters] == ["Arelem"]  # CUTTER/8.5

@@ -217,3 +217,17 @@ def test_no_macros_no_engine() -> None:
     assert Run(pack.load(), _plugins()).macros is None
     assert MacroTable.for_machine(_plugins(), pack.load()) is None
     assert Path(ROOT / "core" / "macros").is_dir()
+
+
+def test_machine_show_lists_a_machine_files_macros(tmp_path: Path) -> None:
+    from click.testing import CliRunner
+    from gecent.core.cli import main
+
+    path = tmp_path / "templated.toml"
+    path.write_text(MACHINE)
+    shown = CliRunner().invoke(main, ["machine", "show", str(path)])
+    assert shown.exit_code == 0
+    assert (
+        "  mist: COOLNT/$P1(MIST)" in shown.output
+        and "  header: tool-change shutdown" in shown.output
+    )

@@ -81,6 +81,10 @@ def machine_as_dict(machine: MachineDefinition) -> dict[str, Any]:
             for spec in cat.options
         ],
         "spindle_ranges": [list(r) for r in machine.spindle_ranges()],
+        "macros": [
+            {"name": m.name, "kind": m.kind.value, "phase": m.phase.value, "sdl": m.sdl}
+            for m in machine.macros
+        ],
         "srtab": {
             i: machine.store[i]
             for i in range(1, machine.srtab_top + 1)
@@ -130,6 +134,11 @@ def describe_machine(machine: MachineDefinition, show_all: bool = False) -> str:
             text = f"{value!r}" if isinstance(value, str) else f"{value:g}"
             flag = " (fixed)" if spec.fixed else ""
             lines.append(f"  {spec.number:>3} {spec.alias:<34} = {text}{flag}")
+    if machine.macros:
+        lines.append("\nmacros in the machine file (docs/macros.md):")
+        for macro in machine.macros:
+            what = macro.sdl if macro.sdl else f"{macro.kind.value} {macro.phase.value}"
+            lines.append(f"  {macro.name}: {what}")
     lines.append("\nSRTAB spindle speeds (option 7 ranges x option 8 speeds):")
     for number, speeds in enumerate(machine.spindle_ranges(), start=1):
         lines.append(f"  range {number}: " + ", ".join(f"{s:g}" for s in speeds))

@@ -42,6 +42,12 @@ def tool_data(ctx: Any) -> None:
     ctx.cmd("CUTTER", ctx.p[1], ctx.p[2])
 
 
+@macros.syntax("TLDATA/$P1(DRILL,TAP,BORE,REAM),$P2,*")
+def hole_tool_data(ctx: Any) -> None:
+    """A hole-making tool's first value is its diameter."""
+    ctx.cmd("CUTTER", ctx.p[2])
+
+
 ignore_noted(macros, "PAINT", "NX DISPLAY ONLY")
 macros.ignore("END-OF-PATH")  # the path's end: nothing to say
 ignore_noted(macros, "SELECT/TOOL,?", "THE NEXT TOOL, FOR A CHANGER THAT STAGES IT")
@@ -55,8 +61,11 @@ def machine_system(ctx: Any) -> None:
     if values not in noted:
         noted.add(values)
         origin = ", ".join(f"{v:g}" for v in values[:3])
+        turned = len(values) >= 9 and values[3:9] != (1.0, 0.0, 0.0, 0.0, 1.0, 0.0)
+        turn = " (ITS AXES TURNED FROM THE PART'S)" if turned else ""
         ctx.warn(
-            f"MSYS: THE MOTION IS IN THE MACHINE SYSTEM AT {origin}; SET THE WORK OFFSET THERE"
+            f"MSYS: THE MOTION IS IN THE MACHINE SYSTEM AT {origin}{turn}; "
+            "SET THE WORK OFFSET THERE"
         )
 
 
