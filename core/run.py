@@ -208,12 +208,25 @@ class Run(Elements):
     def _process(self, records: Iterator[Record]) -> RunResult:
         for text in program_start(self.machine, self.state.numbering):
             self.text_block(Block(Code.INSERT, None, text))
-        if self.macros is not None:
-            return self._process_macros(records)
+        engine = self.macros
+        if engine is None:
+            self.feed(records, True, self.builtin)
+        else:
+            stream = engine.records = Lookahead(records)
+            engine.start()
+            self.feed(stream, engine.hooks.fast_path_allowed(), engine.dispatch)
+        return self.end_of_input()
+
+    def feed(
+        self, records: Iterable[Record], fast_ok: bool, dispatch: Callable[[Record], None]
+    ) -> None:
+        """The record loop: a GOTO by the fast path when ``fast_ok`` (no macro can see it)
+        and nothing special is in force, any other record to ``dispatch`` (the post's own
+        processing, or the macro engine's matching first). A look-ahead's snapshot runs
+        this too."""
         fast: FastLinear | None = None
         result = self.result
         state = self.state
-        units = self.units
         goto = MotionSubtype.GOTO
         for record in records:
             self._file = record.file
@@ -222,67 +235,17 @@ class Run(Elements):
             if self.finished:
                 raise InputError("record after FINI", record.where)
             state.sequence = record.number
-            if type(record) is Motion and record.subtype is goto:
+            if fast_ok and type(record) is Motion and record.subtype is goto:
                 circle = self._circle
                 if fast is None and circle is not None and circle.collecting:
                     circle.finish()  # a GOTO ends the arc before it, as any record does
                     fast = self._fast_path()
                 if fast is not None and fast.goto(record):  # (it applies UNITS itself)
                     continue
-            record = units.record(record)
             fast = None  # the general path: the conditions are looked at again after it
-            self._general(record)
-            fast = self._fast_path()
-        if self._circle is not None and self._circle.collecting:
-            self._circle.finish()
-        return self._finish()
-
-    def _process_macros(self, records: Iterator[Record]) -> RunResult:
-        """The record loop with a macro engine (core/macros)."""
-        engine = self.macros
-        assert engine is not None
-        stream = engine.records = Lookahead(records)
-        engine.start()
-        self.feed(stream, engine.hooks.fast_path_allowed())
-        return self.end_of_input()
-
-    def feed(self, records: Iterable[Record], fast_ok: bool) -> None:
-        """Records through the macro engine, each matched against the user-defined macros;
-        the fast path serves GOTOs only when ``fast_ok`` (no macro can see them). A
-        look-ahead's snapshot runs this too."""
-        engine = self.macros
-        assert engine is not None
-        fast: FastLinear | None = None
-        goto = MotionSubtype.GOTO
-        for record in records:
-            if fast_ok and type(record) is Motion and record.subtype is goto:
-                self._next_record(record)
-                circle = self._circle
-                if fast is None and circle is not None and circle.collecting:
-                    circle.finish()
-                    fast = self._fast_path()
-                if fast is not None and fast.goto(record):
-                    continue
-                fast = None
-                engine.dispatch(record)
+            dispatch(record)
+            if fast_ok:
                 fast = self._fast_path()
-                continue
-            self.take(record)
-            fast = self._fast_path() if fast_ok else None
-
-    def _next_record(self, record: Record) -> None:
-        self._file = record.file
-        self._before, self._record = self._record, record
-        self.result.records += 1
-        if self.finished:
-            raise InputError("record after FINI", record.where)
-        self.state.sequence = record.number
-
-    def take(self, record: Record) -> None:
-        """One record from the CL file through the macro engine."""
-        assert self.macros is not None
-        self._next_record(record)
-        self.macros.dispatch(record)
 
     def end_of_input(self) -> RunResult:
         if self._circle is not None and self._circle.collecting:

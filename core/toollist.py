@@ -88,7 +88,7 @@ def listed_tools(records: Iterable[Record], machine: MachineDefinition) -> list[
             described = current is not None
             if current is None:
                 current = tools[number] = ListedTool(number, cutter, None, 4 if lathe else 0)
-            length = _after(record, "LENGTH")
+            length = record.value_after("LENGTH")
             if length is not None:
                 current.length = units.length(length)
     return list(tools.values())
@@ -114,7 +114,7 @@ def _t_code(statement: Statement, lathe: bool) -> int | None:
     tool = plain[0]
     if not lathe:
         return tool
-    adjust, ofsetl = _after(statement, "ADJUST"), _after(statement, "OFSETL")
+    adjust, ofsetl = statement.value_after("ADJUST"), statement.value_after("OFSETL")
     for value in (adjust, ofsetl):
         if value is not None and (not isfinite(value) or abs(value) > 1e12):
             return None
@@ -123,15 +123,6 @@ def _t_code(statement: Statement, lathe: bool) -> int | None:
         station = plain[1] if len(plain) > 1 else tool
         return station * 100 + int(ofsetl if ofsetl is not None else tool)
     return tool if tool > 99 else tool * 100 + offset
-
-
-def _after(statement: Statement, name: str) -> float | None:
-    args = statement.args
-    for index, arg in enumerate(args[:-1]):
-        following = args[index + 1]
-        if isinstance(arg, Word) and arg.name == name and not isinstance(following, Word):
-            return float(following)
-    return None
 
 
 def _wanted(line: str, more: tuple[str, ...] = ()) -> bool:

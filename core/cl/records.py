@@ -124,6 +124,15 @@ class Statement(Record):
     def numbers(self) -> tuple[float, ...]:
         return tuple(float(a) for a in self.args if isinstance(a, int | float))
 
+    def value_after(self, name: str) -> float | None:
+        """The number right after the word ``name`` (OFSETL, k), or None."""
+        args = self.args
+        for index, arg in enumerate(args[:-1]):
+            following = args[index + 1]
+            if isinstance(arg, Word) and arg.name == name and not isinstance(following, Word):
+                return float(following)
+        return None
+
 
 @dataclass(slots=True, unsafe_hash=True)
 class Circle(Record):

@@ -86,19 +86,20 @@ def rigid(statement: Statement, rows: Matrix) -> Matrix:
     return rows
 
 
-def note_once(ctx: Any, word: str, why: str) -> None:
+def note_once(ctx: Any, word: str, text: str) -> None:
     """A word the dialect ignores, said once per file in the listing."""
     noted = ctx.globals.setdefault("noted", set())
     if word not in noted:
         noted.add(word)
-        ctx.warn(f"{word} IGNORED: {why}")
+        ctx.warn(text)
 
 
 def ignore_noted(macros: Any, sdl: str, why: str) -> None:
     """A user-defined macro that ignores what it matches, with a note once per word."""
 
     def ignored(ctx: Any) -> None:
-        note_once(ctx, getattr(ctx.record, "major", sdl), why)
+        word = getattr(ctx.record, "major", sdl)
+        note_once(ctx, word, f"{word} IGNORED: {why}")
 
     macros.syntax(sdl, name=f"ignore {sdl}")(ignored)
 

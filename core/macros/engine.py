@@ -164,7 +164,7 @@ class MacroEngine(LookAheads):
         try:
             body(MacroContext(self, frame))
         except TerminateMacro:
-            pass
+            return  # TERMAC: the macro ends here (the frame is popped below)
         except (GecentError, Found):
             raise
         except MacroError as error:

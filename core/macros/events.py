@@ -40,6 +40,7 @@ from gecent.core.macros.params import (
     RegisterParams,
     TapeParams,
 )
+from gecent.core.macros.searches import next_motion
 from gecent.core.output.block import TEXT_CODES, Block, Code
 from gecent.core.output.tape import tape_line
 
@@ -180,13 +181,9 @@ class EventHooks:
         run = self.run
         position = run.state.position
         translation = position.translation
-        last = record.points[-1]
-        if record.subtype is MotionSubtype.GODLTA:
-            delta = last if len(last) == 3 else (0.0, 0.0, last[0])
-            cl = tuple(position.previous_part[a] - translation[a] + delta[a] for a in range(3))
-        else:
-            cl = tuple(float(v) for v in last[:3])
-        machine = (*(cl[a] + translation[a] for a in range(3)), 0.0, 0.0, 0.0)
+        end = next_motion(run, record)  # where the move ends, CL and machine values
+        cl = (end.xc, end.yc, end.zc)
+        machine = (end.xm, end.ym, end.zm, 0.0, 0.0, 0.0)
         params = MotionParams()
         circle = run._circle
         arc = (

@@ -104,7 +104,7 @@ def look_ahead(run: MacroHost, search: Search, start: int = 0) -> tuple[Any, Any
     if start:
         records = (r for r in records if r.number >= start)
     try:
-        clone.feed(records, fast)
+        clone.feed(records, fast, look.dispatch)
         clone.end_of_input()
     except Found as found:
         return found.value, look

@@ -4,6 +4,7 @@ variables, $FLOOK and $LOOK, $FINFO, and OPTYPE with its look-ahead; a part of
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from typing import Any
 
 from gecent.core.cl.records import Statement
@@ -13,7 +14,7 @@ from gecent.core.macros.host import MacroHost
 from gecent.core.macros.lookahead import look_ahead
 from gecent.core.macros.model import Kind, Macro, MacroError, Phase
 from gecent.core.macros.operations import NOT_PROCESSED, Operations
-from gecent.core.macros.params import OperationEventParams, PParams
+from gecent.core.macros.params import OperationEventParams
 from gecent.core.macros.searches import (
     FINI_FIRST,
     OPTYPE_FIRST,
@@ -42,11 +43,9 @@ class LookAheads:
     globals: dict[str, Any]
     flags: LookaheadFlags
 
-    def enabled(self, kind: Kind) -> bool:
-        raise NotImplementedError  # (the engine's)
-
-    def single(self, kind: Kind, params: PParams, record: Any, on_output: Any) -> Frame | None:
-        raise NotImplementedError  # (the engine's)
+    # the engine's own (core/macros/engine.py)
+    enabled: Callable[[Kind], bool]
+    single: Callable[..., Frame | None]
 
     def _may_look(self, frame: Frame, what: str) -> None:
         if frame.macro.kind in NO_LOOKAHEAD:

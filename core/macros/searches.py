@@ -47,9 +47,10 @@ def next_motion(
         delta = last if len(last) == 3 else (0.0, 0.0, last[0])
         start = base if base is not None else position.previous_part
         machine = tuple(start[a] + delta[a] for a in range(3))
+        cl = tuple(machine[a] - translation[a] for a in range(3))
     else:
-        machine = tuple(last[a] + translation[a] for a in range(3))
-    cl = tuple(machine[a] - translation[a] for a in range(3))
+        cl = tuple(float(v) for v in last[:3])  # as written: no round trip through TRANS
+        machine = tuple(cl[a] + translation[a] for a in range(3))
     return NextMotion(machine[0], machine[1], machine[2], cl[0], cl[1], cl[2], record.number)
 
 

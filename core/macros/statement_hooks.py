@@ -59,19 +59,19 @@ def _tool_params(statement: Statement) -> ToolChangeParams:
     params.set(2, 2.0 if "NEXT" in words else 1.0)
     params.set(3, 2.0)
     params.set(4, 1.0 if "CLW" in words else 2.0 if "CCLW" in words else None)
-    params.set(5, _after(args, "OFSETL"))
-    params.set(6, _after(args, "LENGTH"))
+    params.set(5, statement.value_after("OFSETL"))
+    params.set(6, statement.value_after("LENGTH"))
     params.set(7, 2.0 if "LARGE" in words else 1.0 if "SMALL" in words else None)
     params.set(8, 1.0 if "START" in words else None)
     params.set(9, tool)
-    params.set(10, _after(args, "RETAIN"))
-    params.set(11, _after(args, "DIAMET"))
-    params.set(12, _after(args, "TIMES"))
+    params.set(10, statement.value_after("RETAIN"))
+    params.set(11, statement.value_after("DIAMET"))
+    params.set(12, statement.value_after("TIMES"))
     setool = _after_three(args, "SETOOL")
     for number, value in zip((13, 14, 15), setool, strict=True):
         params.set(number, value)
-    params.set(16, _after(args, "ATANGL"))
-    params.set(17, _after(args, "SETANG"))
+    params.set(16, statement.value_after("ATANGL"))
+    params.set(17, statement.value_after("SETANG"))
     params.set(18, 2.0 if "REAR" in words else 1.0 if "FRONT" in words else None)
     params.set(19, 2.0 if "MILL" in words else 1.0 if "TURN" in words else None)
     return params
@@ -84,13 +84,6 @@ def _after_three(args: tuple[Any, ...], name: str) -> tuple[float | None, ...]:
             values = [a for a in args[index + 1 : index + 4] if not isinstance(a, Word)]
             return tuple([float(v) for v in values] + [None] * (3 - len(values)))
     return (None, None, None)
-
-
-def _after(args: tuple[Any, ...], name: str) -> float | None:
-    for index, arg in enumerate(args[:-1]):
-        if isinstance(arg, Word) and arg.name == name and not isinstance(args[index + 1], Word):
-            return float(args[index + 1])
-    return None
 
 
 def _tool_statement(statement: Statement, params: ToolChangeParams) -> Statement:

@@ -26,11 +26,11 @@ from gecent.core.errors import InputError
 from gecent.core.hookspecs import Register, hookimpl
 from gecent.core.macros import Macros
 from gecent.core.macros.dialect import Dialect, ignore_noted
+from gecent.plugins.dialects.cycle_words import cycle_words, split_cycle
 
 NAME = "fusion"
 TITLE = "Autodesk Fusion ISO 4343 APT"
 macros = Macros()
-UNITS = ("MMPM", "IPM", "MMPR", "IPR")
 
 
 def _unquoted(text: str) -> str:
@@ -71,20 +71,7 @@ ignore_noted(macros, "MODE/()", "THE MACHINE'S MODE IS ITS OWN")
 def cycle(ctx: Any) -> None:
     """Held until its first point: Fusion's cycle point is the hole's bottom and its
     clearance an absolute height, so the post's cycle (from the hole's top) is made there."""
-    items = list(ctx.p[2])
-    numbers: list[float] = []
-    pairs: dict[str, float] = {}
-    index = 0
-    while index < len(items):
-        item = items[index]
-        if hasattr(item, "name"):
-            if index + 1 >= len(items) or hasattr(items[index + 1], "name"):
-                raise InputError(f"CYCLE: {item.name} expects a value", ctx.record.where)
-            pairs[item.name] = float(items[index + 1])
-            index += 2
-        else:
-            numbers.append(float(item))
-            index += 1
+    numbers, pairs = split_cycle(ctx.p[2], ctx.record.where)
     if len(numbers) == 3 and ctx.p[1].name == "BORE":
         numbers = numbers[:2]  # the bore's shift goes with ORIENT, which is not kept
     if len(numbers) != 2:
@@ -122,15 +109,8 @@ def cycle_point(ctx: Any) -> None:
     clear = held["plane"] - top
     if held["made"] != (top, clear):
         pairs = held["pairs"]
-        words: list[Any] = [held["kind"], "DEPTH", held["depth"], "CLEAR", clear]
-        if "INCR" in pairs:
-            words += ["STEP", pairs["INCR"]]
-        if pairs.get("DWELL"):
-            words += ["DWELL", pairs["DWELL"]]
-        words += ["RETURN", 0.0]  # back to where the cycle began (the clearance height)
-        for unit in UNITS:
-            if unit in pairs:
-                words += [unit, pairs[unit]]
+        # back to where the cycle began (the clearance height)
+        words = cycle_words(held["kind"], held["depth"], clear, pairs, pairs.get("INCR"), True)
         ctx.cmd("CYCLE", *words)
         held["made"] = (top, clear)
     ctx.goto(ctx.p[1], ctx.p[2], top)

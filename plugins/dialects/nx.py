@@ -26,6 +26,7 @@ from gecent.core.errors import InputError
 from gecent.core.hookspecs import Register, hookimpl
 from gecent.core.macros import Macros
 from gecent.core.macros.dialect import Dialect, ignore_noted
+from gecent.plugins.dialects.cycle_words import cycle_words, split_cycle
 
 NAME = "nx"
 TITLE = "Siemens NX CLSF"
@@ -87,33 +88,15 @@ def cycle(ctx: Any) -> None:
     items = list(ctx.p[2])
     kind = ctx.p[1].name
     if items and getattr(items[0], "name", None) in ("DEEP", "BRKCHP"):
-        kind = "DEEP" if items.pop(0).name == "DEEP" else "BRKCHP"
-    pairs: dict[str, float] = {}
-    for index in range(0, len(items) - 1, 2):
-        word, value = items[index], items[index + 1]
-        if getattr(word, "name", "") == "RTRCTO" and getattr(value, "name", "") == "AUTO":
-            continue  # the R plane: the post's own return
-        if not hasattr(word, "name") or hasattr(value, "name"):
-            raise InputError(
-                f"CYCLE: {word!s} takes a number (word, value pairs expected)", ctx.record.where
-            )
-        pairs[word.name] = float(value)
-    if len(items) % 2 or "FEDTO" not in pairs:
-        raise InputError(
-            "CYCLE: FEDTO (the depth) and word, value pairs expected", ctx.record.where
-        )
-    words: list[Any] = [kind, "DEPTH", abs(pairs["FEDTO"]), "CLEAR", pairs.get("RAPTO", 0.0)]
+        kind = items.pop(0).name
+    where = ctx.record.where
+    numbers, pairs = split_cycle(items, where)
+    if numbers or "FEDTO" not in pairs:
+        raise InputError("CYCLE: FEDTO (the depth) and word, value pairs expected", where)
+    back = pairs.get("RTRCTO", 0.0) > pairs.get("RAPTO", 0.0)  # above R: the start level
     step = pairs.get("STEP", pairs.get("INCR"))  # the peck, by either name
-    if step:
-        words += ["STEP", step]
-    if pairs.get("DWELL"):
-        words += ["DWELL", pairs["DWELL"]]
-    if pairs.get("RTRCTO", 0.0) > pairs.get("RAPTO", 0.0):
-        words += ["RETURN", 0.0]  # above R: back to the level the cycle started from
-    for unit in ("MMPM", "IPM", "MMPR", "IPR"):
-        if unit in pairs:
-            words += [unit, pairs[unit]]
-    ctx.cmd("CYCLE", *words)
+    ctx.cmd("CYCLE", *cycle_words(kind, abs(pairs["FEDTO"]), pairs.get("RAPTO", 0.0), pairs,
+                                  step, back))  # fmt: skip
 
 
 def sniff(head: str) -> bool:

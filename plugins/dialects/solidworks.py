@@ -28,7 +28,8 @@ from gecent.core.cl.records import Statement
 from gecent.core.errors import InputError
 from gecent.core.hookspecs import Register, hookimpl
 from gecent.core.macros import Macros
-from gecent.core.macros.dialect import IDENTITY, Dialect, Matrix, ignore_noted, rigid
+from gecent.core.macros.dialect import IDENTITY, Dialect, Matrix, ignore_noted, note_once, rigid
+from gecent.plugins.dialects.cycle_words import cycle_words, split_cycle
 
 NAME = "solidworks-cam"
 TITLE = "SolidWorks CAM"
@@ -38,13 +39,6 @@ macros = Macros()
 CYCLES = {"DRILL": "DRILL", "DEEP": "DEEP", "DEEP2": "DEEP", "TAP": "TAP", "BORE": "BORE",
           "REAM": "REAM", "CSINK": "CSINK", "BRKCHP": "BRKCHP", "FACE": "FACE"}  # fmt: skip
 NOTES = ("TRNTYP", "SETUP")
-
-
-def _note_once(ctx: Any, word: str) -> None:
-    noted = ctx.globals.setdefault("noted", set())
-    if word not in noted:
-        noted.add(word)
-        ctx.warn(f"{word} IS A {TITLE.upper()} NOTE; IGNORED")
 
 
 @macros.syntax("UNIT/$P1()")
@@ -74,37 +68,20 @@ def cycle_init(ctx: Any) -> None:
 @macros.syntax("CYCLE/$P1(DRILL,DEEP,DEEP2,TAP,BORE,REAM,CSINK,BRKCHP,FACE),$P2*")
 def cycle(ctx: Any) -> None:
     kind = CYCLES[ctx.p[1].name]
-    pairs = _pairs(ctx.record, ctx.p[2])
+    where = ctx.record.where
+    numbers, pairs = split_cycle(ctx.p[2], where)
+    if numbers:
+        raise InputError(f"CYCLE/{ctx.p[1].name}: expected word, value pairs", where)
     if "FEDTO" not in pairs:
-        raise InputError(f"CYCLE/{ctx.p[1].name}: FEDTO (the depth) is missing", ctx.record.where)
-    words: list[Any] = [kind, "DEPTH", abs(pairs["FEDTO"]), "CLEAR", pairs.get("RAPTO", 0.0)]
+        raise InputError(f"CYCLE/{ctx.p[1].name}: FEDTO (the depth) is missing", where)
     peck = pairs.get("SUBPECK", pairs.get("1STPECK"))
-    if kind == "DEEP" and peck:
-        words += ["STEP", peck]
-        if pairs.get("1STPECK") not in (None, peck):
-            ctx.warn(f"CYCLE/{ctx.p[1].name}: EVERY PECK IS {peck:g} (FIRST PECK "
-                     f"{pairs['1STPECK']:g} NOT KEPT)")  # fmt: skip
-    if pairs.get("DWELL"):
-        words += ["DWELL", pairs["DWELL"]]
-    if pairs.get("RTRCTO", 0.0) > pairs.get("RAPTO", 0.0):
-        words += ["RETURN", 0.0]  # back to the level the cycle started from
-    for unit_word in ("MMPM", "IPM", "MMPR", "IPR"):
-        if unit_word in pairs:
-            words += [unit_word, pairs[unit_word]]
+    if kind == "DEEP" and peck and pairs.get("1STPECK") not in (None, peck):
+        ctx.warn(f"CYCLE/{ctx.p[1].name}: EVERY PECK IS {peck:g} (FIRST PECK "
+                 f"{pairs['1STPECK']:g} NOT KEPT)")  # fmt: skip
+    back = pairs.get("RTRCTO", 0.0) > pairs.get("RAPTO", 0.0)  # above R: the start level
+    words = cycle_words(kind, abs(pairs["FEDTO"]), pairs.get("RAPTO", 0.0), pairs,
+                        peck if kind == "DEEP" else None, back)  # fmt: skip
     ctx.cmd("CYCLE", *words)
-
-
-def _pairs(record: Statement, items: tuple[Any, ...]) -> dict[str, float]:
-    pairs: dict[str, float] = {}
-    index = 0
-    while index < len(items):
-        word = items[index]
-        value = items[index + 1] if index + 1 < len(items) else None
-        if not hasattr(word, "name") or value is None or hasattr(value, "name"):
-            raise InputError(f"CYCLE: expected word, value pairs, found {word!s}", record.where)
-        pairs[word.name] = float(value)
-        index += 2
-    return pairs
 
 
 @macros.syntax("#2000:*")
@@ -112,7 +89,7 @@ def vendor_words(ctx: Any) -> None:
     """CSI_... (CAMWorks' own settings), TRNTYP and SETUP: notes for the CAM system."""
     major = getattr(ctx.record, "major", "")
     if major.startswith("CSI_") or major in NOTES:
-        _note_once(ctx, major)
+        note_once(ctx, major, f"{major} IS A {TITLE.upper()} NOTE; IGNORED")
         return
     ctx.output()
 
