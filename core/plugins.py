@@ -55,6 +55,13 @@ class PluginSet:
     def family(self, name: str) -> dict[str | int, PluginInfo]:
         return self.by_family.setdefault(name, {})
 
+    def copy(self) -> PluginSet:
+        """A set of its own to add to (the plugins themselves shared)."""
+        return PluginSet(
+            {family: dict(found) for family, found in self.by_family.items()},
+            list(self.failures),
+        )
+
     def all(self) -> list[PluginInfo]:
         return [info for family in FAMILIES for info in self.family(family.name).values()]
 

@@ -156,6 +156,7 @@ def test_the_fast_g_code_choice_is_selg(machine: str) -> None:
     sizes = {1, codes.depmax}
     for limit in codes.limits:
         sizes |= {int(limit) - 1, int(limit), int(limit) + 1}
+
     def outcome(choose, size: int) -> object:  # type: ignore[no-untyped-def]
         try:
             return choose(size)

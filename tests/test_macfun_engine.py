@@ -29,7 +29,7 @@ def run_on(machine: str, text: str, plugins: PluginSet | None = None) -> Run:
 
 def with_macfun(macfun: Macfun) -> PluginSet:
     base = get_plugins()
-    plugins = PluginSet({family: dict(found) for family, found in base.by_family.items()})
+    plugins = base.copy()
     plugins.family("macfuns")[f"test-{macfun.machine}"] = PluginInfo(
         "macfuns", macfun.name, macfun.name, "(test)", "", "tests", macfun
     )

@@ -11,7 +11,7 @@ from gecent.core.errors import GecentError, InputError
 from gecent.core.families import MachinePack
 from gecent.core.machine.loader import load_machine_text
 from gecent.core.macros.sdl import SdlError, parse_sdl
-from gecent.core.plugins import PluginInfo, PluginSet, get_plugins
+from gecent.core.plugins import PluginInfo, get_plugins
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
@@ -116,7 +116,7 @@ def test_a_machine_file_macro_loads_or_is_refused_by_name(entry: dict[str, objec
     except InputError as refused:
         assert "fuzzed.toml" in str(refused)
         return
-    plugins = PluginSet({f: dict(found) for f, found in get_plugins().by_family.items()})
+    plugins = get_plugins().copy()
     pack = MachinePack.from_text(text, "fuzzed.toml")
     plugins.family("machines")["fuzzed"] = PluginInfo(
         "machines", "fuzzed", "fuzzed", "(fuzz)", "", "tests", pack

@@ -154,7 +154,7 @@ def templated() -> MachinePack:
 
 
 def test_machine_file_macros_render_their_templates() -> None:
-    plugins = PluginSet({family: dict(found) for family, found in _plugins().by_family.items()})
+    plugins = _plugins().copy()
     plugins.family("machines")["templated"] = _info(templated())
     tape, warnings = post(
         plugins,
@@ -190,7 +190,7 @@ def test_a_bad_machine_file_macro_names_the_file_table_and_entry(entry: str, mes
 
 def test_an_undefined_template_name_is_named_with_its_macro() -> None:
     text = MACHINE.replace("globals.get('tools', '?')", "no_such_name")
-    plugins = PluginSet({family: dict(found) for family, found in _plugins().by_family.items()})
+    plugins = _plugins().copy()
     plugins.family("machines")["templated"] = _info(MachinePack.from_text(text, "t.toml"))
     with pytest.raises(
         InputError, match=r"macro templated:header: line .*'no_such_name' is undefined"

@@ -248,9 +248,7 @@ def test_a_json_reader_that_goes_away_ends_the_json_not_the_post(tmp_path: Path)
     source.write_text("\n".join(["MACHIN/GECENT,23", "FEDRAT/20", *moves, "FINI"]) + "\n")
     tape = tmp_path / "long.tape"
     command = [sys.executable, "-m", "gecent.core.cli", "post", str(source), "-o", str(tape)]
-    process = subprocess.Popen(
-        [*command, "--json"], stdout=subprocess.PIPE, stderr=subprocess.PIPE
-    )
+    process = subprocess.Popen([*command, "--json"], stdout=subprocess.PIPE, stderr=subprocess.PIPE)
     assert process.stdout is not None
     assert process.stdout.readline().startswith(b"{")
     process.stdout.close()  # the reader goes away with megabytes still to come

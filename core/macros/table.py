@@ -31,12 +31,9 @@ def with_macros(
     plugins: PluginSet, macros: list[Macro], distribution: str = "(local)"
 ) -> PluginSet:
     """The plugins plus macros from outside any pack (a script, a test): a user layer."""
-    from gecent.core.plugins import PluginInfo, PluginSet
+    from gecent.core.plugins import PluginInfo
 
-    extended = PluginSet(
-        {family: dict(found) for family, found in plugins.by_family.items()},
-        list(plugins.failures),
-    )
+    extended = plugins.copy()
     family = extended.family("macros")
     for macro in macros:
         if macro.key in family:
