@@ -278,6 +278,20 @@ def test_the_nx_and_solidworks_examples_post(index: int, tmp_path: Path) -> None
 
 
 @needs_corpus
+def test_the_nx_example_plots_through_its_dialect(tmp_path: Path) -> None:
+    """plot reads a CL file as the post does: NX's CYCLE/DRILL,DEEP is its peck cycle
+    (read as plain APT it is refused)."""
+    source, picture = tmp_path / "example.cl", tmp_path / "example.svg"
+    source.write_text(dialect_examples()[0])
+    arguments = ["plot", str(source), "--machine", "linuxcnc-mill", "-o", str(picture)]
+    drawn = CliRunner().invoke(main, arguments)
+    assert drawn.exit_code == 0, drawn.output
+    assert "44 moves drawn" in drawn.output
+    plain = CliRunner().invoke(main, [*arguments, "--dialect", "none"])
+    assert plain.exit_code == 3 and "CYCLE/DRILL,DEEP" in plain.output
+
+
+@needs_corpus
 @needs_rs274
 def test_the_nx_example_verifies_nurbs_and_all(tmp_path: Path) -> None:
     """The NX example's path (11-value circle, peck cycle, NURBS) read back by rs274. (The

@@ -3,9 +3,10 @@ and its report (docs/verify.md)."""
 
 from __future__ import annotations
 
+from collections.abc import Iterator
 from dataclasses import dataclass, field
 
-from gecent.core.cl.records import Statement
+from gecent.core.cl.records import Record, Statement
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.machine.selection import apply_machin_options, first_machin, resolve_machine
 from gecent.core.macros.dialect import choose_dialect, read_in_dialect, read_raw
@@ -105,6 +106,15 @@ def cl_machine(
     return machine
 
 
+def cl_as_posted(
+    cl_file: str, plugins: PluginSet, machine: MachineDefinition, dialect: str | None = None
+) -> Iterator[Record]:
+    """A CL file's records as the post reads them for this machine: through its dialect
+    (given or detected), in the machine's unit until UNITS says."""
+    spoken = choose_dialect(cl_file, plugins, dialect)
+    return read_in_dialect(cl_file, plugins, spoken, None, machine.number_option(138) == 1)
+
+
 def verify(
     tape_path: str,
     cl_file: str,
@@ -114,9 +124,7 @@ def verify(
     dialect: str | None = None,
 ) -> Verification:
     machine = cl_machine(cl_file, plugins, machine_key, dialect)
-    spoken = choose_dialect(cl_file, plugins, dialect)  # read as the post reads it
-    metric = machine.number_option(138) == 1
-    path = cl_path(read_in_dialect(cl_file, plugins, spoken, None, metric), machine)
+    path = cl_path(cl_as_posted(cl_file, plugins, machine, dialect), machine)
     reading = interpret(tape_path, diameter=machine.number_option(260) == 1)
     unit = "in" if reading.units == "INCHES" else "mm"
     tolerance = tolerance_mm / 25.4 if unit == "in" else tolerance_mm
