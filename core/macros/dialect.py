@@ -175,16 +175,14 @@ class DialectStage:
     def translate(self, records: Iterable[Record]) -> Iterator[Record]:
         nurbs: NurbsCollector | None = None
         plain = self._plain_goto
+        track = self.dialect.track_position
         goto = MotionSubtype.GOTO
+        # a GOTO passes untouched while no frame turns it and no NURBS is being collected
+        # (the frame changes only in _translate, so this is settled after each other record)
+        passing = plain and self.frame is None
         for record in records:
-            if (
-                plain
-                and type(record) is Motion
-                and record.subtype is goto
-                and nurbs is None
-                and self.frame is None
-            ):
-                if self.dialect.track_position:
+            if passing and type(record) is Motion and record.subtype is goto:
+                if track:
                     self._follow(record)
                 yield record  # the common case, as fast as it can be
                 continue
@@ -195,9 +193,11 @@ class DialectStage:
                 nurbs = None
             if self.dialect.nurbs and isinstance(record, Statement) and record.major == "NURBS":
                 nurbs = NurbsCollector(record)
+                passing = False
                 continue
             self._note_tolerance(record)
             yield from self._translate(record)
+            passing = plain and self.frame is None
         if nurbs is not None:
             yield from self._translate(nurbs.motion(self._tolerance()))
 
