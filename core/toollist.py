@@ -125,16 +125,13 @@ def _t_code(statement: Statement, lathe: bool) -> int | None:
     return tool if tool > 99 else tool * 100 + offset
 
 
-def _wanted(line: str, more: tuple[str, ...] = ()) -> bool:
-    """A whole one-line statement beginning with one of the words, or with one of a
-    dialect's tool lines (a continued statement is left to the post, which reads it)."""
+def _wanted(line: str, words: tuple[str, ...], initials: str) -> bool:
+    """A whole one-line statement beginning with one of the words (a continued statement
+    is left to the post, which reads it whole)."""
     text = line.strip()
-    if not text or (text.endswith("$") and not text.endswith("$$")):
+    if not text or text[0] not in initials or (text.endswith("$") and not text.endswith("$$")):
         return False
-    upper = text.upper()
-    if more and upper.startswith(more):
-        return True
-    return text[0] in "LTCUltcu" and upper.startswith(WANTED)
+    return text.upper().startswith(words)
 
 
 def _records(path: str, plugins: PluginSet, more: tuple[str, ...] = ()) -> Iterator[Record]:
@@ -147,11 +144,13 @@ def _records(path: str, plugins: PluginSet, more: tuple[str, ...] = ()) -> Itera
         return iter(())  # the post itself reports the file
     if b"\0" in head:
         return read_cl(path, plugins)
+    words = WANTED + more  # with a dialect's own tool lines
+    initials = "".join({word[0] + word[0].lower() for word in words})
     try:
         with open(path, encoding="utf-8", errors="replace", newline="") as handle:
             lines: list[str] = []
             for line in handle:
-                if _wanted(line, more):
+                if _wanted(line, words, initials):
                     lines.append(line)
                 elif line.lstrip()[:4].upper() in _MOVES and (not lines or lines[-1] != _MOVED):
                     lines.append(_MOVED)  # one stand-in for a run of moves
