@@ -215,6 +215,8 @@ class PostState:
     sequence: int = 0  # SEQCTR: the CL record number of the record being processed
     skipping: bool = False  # SKPFLG (OPSKIP)
     max_segments: int = 100_000  # gecent's bound on one CL move's blocks (0: none)
+    head: int = 0  # IHEAD of a multihead run's head (0: a single-head run)
+    multihead_op: int = 0  # NOP: the last OP/n of this head
 
     def remember(self, slot: int, value: float | None) -> None:
         """Record a condition in STATE; while stopped it counts as given again."""

@@ -62,7 +62,6 @@ def test_a_code_the_machine_lacks_is_comment_22(statement: str) -> None:
     [
         ("SELECT/OFSETL,1,2,3,4", "SELECT/OFSETL"),
         ("SELECT/TABLE,1", "SELECT/TABLE"),
-        ("SELECT/HED,2", "SELECT/HED"),
         ("SELECT/TOOL,5", "SELECT/TOOL"),
         ("SELECT/SADDLE", "SELECT/SADDLE"),
     ],
@@ -83,6 +82,8 @@ def test_positioning_multihead_and_multiaxis_minors_are_not_built(
         ("SELECT/READER,1.5", "SELECT/READER expects a reader number"),
         ("SELECT/PALLET,1,2", "SELECT/PALLET expects a pallet number"),
         ("SELECT/3", "SELECT expects a minor word first"),
+        ("SELECT/HEAD,2", "COMBIN/2 must come first"),
+        ("SELECT/HED,2", "COMBIN/2 must come first"),
     ],
 )
 def test_bad_forms_name_what_is_expected(statement: str, message: str) -> None:

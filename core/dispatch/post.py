@@ -11,11 +11,13 @@ from gecent.core.machine.definition import MachineDefinition
 from gecent.core.machine.selection import first_machin, resolve_machine
 from gecent.core.macros.dialect import choose_dialect, read_in_dialect, read_raw
 from gecent.core.motion.guard import DEFAULT_MAX_SEGMENTS
+from gecent.core.multihead.first_pass import combined_program
 from gecent.core.output.sinks import Sinks
 from gecent.core.plugins import PluginSet
 from gecent.core.run import Run
 from gecent.core.state import RunResult
 from gecent.core.toollist import tool_list
+from gecent.core.units import UnitScale
 
 
 def post(
@@ -37,6 +39,19 @@ def post(
     spoken = choose_dialect(path, plugins, dialect)
     request, notes = first_machin(read_raw(path, plugins, spoken))
     machine = resolve_machine(plugins, machine_override, request)
+    if len(machine.heads) > 1 and combined_program(read_raw(path, plugins, spoken)):
+        from gecent.core.multihead.post import post_multihead
+
+        outputs = sinks(machine) if sinks is not None else None
+        for note in notes:
+            if report is not None:
+                report(note)
+        records = read_in_dialect(
+            path, plugins, spoken, report or _ignore, UnitScale(machine).machine_mm == 1.0
+        )
+        return post_multihead(
+            machine, plugins, watch(records) if watch else records, outputs, report, max_segments
+        )
     run = Run(
         machine,
         plugins,
@@ -47,7 +62,11 @@ def post(
     )
     if machine.number_option(264) == 1:
         run.state.header = tool_list(path, plugins, machine, spoken)
-    for note in notes:
+    for note in [*notes, *run.sinks.notes]:  # the outputs' (GEOUT1 replaced) after MACHIN's
         run.warn(note)
     records = read_in_dialect(path, plugins, spoken, run.warn, run.units.machine_mm == 1.0)
     return run.process(watch(records) if watch is not None else records)
+
+
+def _ignore(diagnostic: Diagnostic) -> None:
+    """Diagnostics of the reader are reported by the heads' runs."""

@@ -89,6 +89,10 @@ class Block:
     # set by the output element: the printed value of each register output, and the tape line
     words: tuple[tuple[int, str], ...] = ()
     punch: str | None = None
+    # multihead (manual §3.4.8): the head a block belongs to (0: a single-head run), and a
+    # combined block's two halves, head 1's and head 2's (GMHBUF 1-20 and 21-40)
+    head: int = 0
+    halves: tuple[Block, Block] | None = None
 
     @classmethod
     def motion(

@@ -115,6 +115,9 @@ class OutputElement:
         self.end_code: float | Absent = ABSENT if end_code is None else end_code
         length_code = machine.g_code(TOOL_LENGTH_ON)
         self.tool_length_code: float | Absent = ABSENT if length_code is None else length_code
+        # pass 1 of a multihead run (manual §3.4.8.1): OUTPUT finishes the block and dumps
+        # it; the GEOUT conversion waits for the merge pass (core/multihead)
+        self.dump_only = state.head != 0
 
     # -- OUTPUT (flow chart 8) ------------------------------------------------------------
 
@@ -509,9 +512,15 @@ class OutputElement:
     # -- GEOUT: words and the tape line (flow chart 12) ----------------------------------
 
     def _emit(self, block: Block) -> None:
-        if block.code is Code.FROM:  # printed in the absolute columns only, never punched
+        if self.dump_only or block.code is Code.FROM:  # FROM: printed, never punched
             self.emit(block)
             return
+        self.convert(block)
+        self.emit(block)
+
+    def convert(self, block: Block) -> None:
+        """GEOUT's conversion: SHUFFL, the register words with their redundancy tests and
+        the tape line (flow chart 12)."""
         modern = self.modern
         placed = False
         if modern.absolute and block.position is not None and block.code in PLACED_CODES:
@@ -546,7 +555,6 @@ class OutputElement:
         if block.punched:
             punch = self.separator.join(letter + punched for _, letter, _, punched in words)
             block.punch = "/" + punch if block.skipped else punch
-        self.emit(block)
 
 
 def _nowhere(block: Block) -> None:

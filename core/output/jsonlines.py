@@ -21,12 +21,14 @@ def block_record(
     tape (the punched line, None when not punched), words (letter -> printed value),
     position (the machine point reached, in CL axis order and machine units), feed (the
     feed in units per minute the block makes), rpm (the speed its S stands for), rapid,
-    cut_minutes and dwell_minutes."""
-    letters = machine.registers.letters
+    cut_minutes and dwell_minutes; on a multihead program the head, and a combined
+    block's two halves, each as a block of its own."""
+    head = block.head
+    letters = machine.heads[head - 1 if 0 < head <= len(machine.heads) else 0].letters
     step = machine.number_option(14)
     feed = block.cells[19]
     rpm = block.cells[20]
-    return {
+    record: dict[str, object] = {
         "record": block.record,
         "code": block.code.name,
         "code_number": int(block.code),
@@ -44,6 +46,11 @@ def block_record(
         "cut_minutes": block.cut_minutes,
         "dwell_minutes": block.dwell_minutes,
     }
+    if head:
+        record["head"] = head
+    if block.halves is not None:
+        record["halves"] = [block_record(half, machine, half.punch) for half in block.halves]
+    return record
 
 
 def json_lines(blocks: Iterable[Block], machine: MachineDefinition) -> Iterator[str]:

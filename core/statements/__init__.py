@@ -25,6 +25,7 @@ def handlers() -> dict[str, Handler]:
         delay,
         feed,
         machine,
+        multihead,
         select,
         spindle_tool,
         tape,
@@ -46,6 +47,7 @@ def handlers() -> dict[str, Handler]:
         threading,
         cutcom,
         select,
+        multihead,
     )
     for module in modules:
         table.update(module.HANDLERS)

@@ -1,7 +1,9 @@
 """SELECT (SLCTGB, manual 001 L36895-36925): the minor word names the subroutine. Built:
 FEDOVR (feedrate override, L31066-31100), PALLET (SELPAL) and READER (SELRDR)
-(L37184-37248), each an M code in a block by itself. OFSETL, TABLE, HED and TOOL belong to
-positioning, multihead and multiaxis machines and are not built yet.
+(L37184-37248), each an M code in a block by itself. SELECT/HEAD,n (SELHED, 001 L7214-7216)
+is routed by a multihead program's first pass (core/multihead/first_pass.py); met by a
+single-head run it is refused. OFSETL, TABLE and TOOL belong to positioning and multiaxis
+machines and are not built yet.
 """
 
 from __future__ import annotations
@@ -58,7 +60,18 @@ def _numbered(cell: int, minor: str) -> Callable[[Post, Statement], None]:
     return handler
 
 
+def _head(run: Post, statement: Statement) -> None:
+    """SELECT/HEAD,n reaches a run only when the program is not a multihead one."""
+    raise InputError(
+        "SELECT/HEAD selects a head of a multihead program: COMBIN/2 must come first, "
+        "before the first motion, on a machine with two heads",
+        statement.where,
+    )
+
+
 _MINORS: dict[str, Callable[[Post, Statement], None]] = {
+    "HEAD": _head,
+    "HED": _head,
     "FEDOVR": _feed_override,
     "PALLET": _numbered(PALLET_CELL, "PALLET"),
     "READER": _numbered(READER_CELL, "READER"),

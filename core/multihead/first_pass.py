@@ -1,0 +1,145 @@
+"""The first pass of a multihead program (manual §3.4.8.1 and §2.4.5.2, 001 L7170-7297,
+L2180-2213): every record is processed for the head SELECT/HEAD,n selected last, by that
+head's own run (its own position, feed, spindle and tool, and its own registers), and each
+finished block is dumped onto the head's scratch tape instead of being printed and
+punched. Records before the first SELECT/HEAD (PARTNO, MACHIN, COMBIN, ...) and FINI go
+to both heads, as the manual's example has a PARTNO, a FROM and an END on each tape
+(001 L2214-2300).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterable, Iterator
+
+from gecent.core.cl.records import Fini, Motion, Record, Statement, Word
+from gecent.core.dump import state_dump
+from gecent.core.errors import (
+    Diagnostic,
+    FatalError,
+    GecentError,
+    InputError,
+    InternalError,
+    NotYetSupported,
+    RunStopped,
+)
+from gecent.core.machine.definition import MachineDefinition
+from gecent.core.multihead.dump import ScratchTape
+from gecent.core.multihead.heads import head_machine
+from gecent.core.output.block import Block
+from gecent.core.output.sinks import Ending, Sinks
+from gecent.core.plugins import PluginSet
+from gecent.core.run import Run
+from gecent.core.state import RunResult
+from gecent.core.statements.multihead import MAX_HEADS
+
+
+def combined_program(records: Iterable[Record]) -> bool:
+    """True when COMBIN comes before the first motion record: the program is a multihead
+    one (the environment is set up at the start, 001 L7170-7176)."""
+    for record in records:
+        if isinstance(record, Motion):
+            return False
+        if isinstance(record, Statement) and record.major == "COMBIN":
+            return True
+    return False
+
+
+class HeadSinks(Sinks):
+    """A head run's one sink, its scratch tape: blocks go there unconverted (no tape line
+    yet: the merge pass makes it with the head's registers)."""
+
+    def __init__(self, tape: ScratchTape) -> None:
+        super().__init__([tape])
+        self.tape = tape
+
+    def emit(self, block: Block) -> None:
+        self.tape.block(block, None)
+
+    def emit_known(self, block: Block, line: str) -> None:
+        self.tape.block(block, None)
+
+
+class FirstPass:
+    """Both heads' runs and the routing of records between them."""
+
+    def __init__(
+        self,
+        machine: MachineDefinition,
+        plugins: PluginSet | None,
+        report: Callable[[Diagnostic], None] | None,
+        max_segments: int,
+    ) -> None:
+        self.machine = machine
+        self.tapes = [ScratchTape(head) for head in range(1, MAX_HEADS + 1)]
+        self.runs: list[Run] = []
+        for head, tape in enumerate(self.tapes, start=1):
+            run = Run(head_machine(machine, head), plugins, HeadSinks(tape), report, max_segments)
+            run.use_fast_path = run.fast_allowed = False  # every block must reach the tape
+            run.state.head = head
+            if run.macros is not None:
+                self.remove()
+                raise NotYetSupported("macros in a multihead program (COMBIN)")
+            self.runs.append(run)
+        self.selected: Run | None = None  # None: every head (before the first SELECT/HEAD)
+        self.record: Record | None = None
+
+    def process(self, records: Iterator[Record]) -> RunResult:
+        """Run the whole file through; the scratch tapes are ready to read after it. On
+        any error they are removed and the error raised, naming the record."""
+        try:
+            for record in records:
+                self.record = record
+                self._route(record)
+            for run in self.runs:
+                run.end_of_input()
+        except (FatalError, RunStopped) as error:
+            if error.where is None and self.record is not None:
+                error.where = self.record.where
+            run = self.selected or self.runs[0]
+            error.partial = run.result
+            run.result.dump = state_dump(str(error), run.state, self.record)
+            self.remove()
+            raise
+        except GecentError as error:
+            if isinstance(error, InputError | NotYetSupported) and error.where is None:
+                error.where = self.record.where if self.record is not None else None
+            self.remove()
+            raise
+        except Exception as error:
+            self.remove()
+            raise InternalError(error, self.record.where if self.record else None) from error
+        except BaseException:
+            self.remove()
+            raise
+        for tape in self.tapes:
+            tape.close(Ending(True))
+        return self.runs[0].result
+
+    def _route(self, record: Record) -> None:
+        if isinstance(record, Statement) and record.major == "SELECT":
+            args = record.args
+            if args and isinstance(args[0], Word) and args[0].name in ("HEAD", "HED"):
+                self._select(record)
+                return
+        if self.selected is None or isinstance(record, Fini):
+            for run in self.runs:
+                if not run.finished:
+                    run.feed((record,), False, run.builtin)
+        else:
+            self.selected.feed((record,), False, self.selected.builtin)
+
+    def _select(self, record: Statement) -> None:
+        """SELECT/HEAD,n (SELHED, 001 L7214-7216): IHEAD = n."""
+        rest = record.args[1:]
+        if (
+            len(rest) != 1
+            or isinstance(rest[0], Word)
+            or rest[0] != int(rest[0])
+            or not 1 <= rest[0] <= MAX_HEADS
+        ):
+            raise InputError(f"SELECT/HEAD expects a head number 1..{MAX_HEADS}", record.where)
+        self.selected = self.runs[int(rest[0]) - 1]
+
+    def remove(self) -> None:
+        for tape in self.tapes:
+            tape.remove()

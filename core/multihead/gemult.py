@@ -1,0 +1,169 @@
+"""The merge pass GEMULT (manual §3.4.8.2, 001 L7298-7359, L2214-2300): the two scratch
+tapes are read back block by block; a head's blocks go out alone until both heads stand at
+an OP/n block; equal operation numbers start a combined section, in which the heads' moves
+are cut together, unequal ones send the head with the lower number on alone.
+
+Inside a section (§3.4.8.2.1) lines, dwells and circles merge; any other block goes out
+alone as it is met. With a feedrate register per head (option 139 != 0, 001 L2040-2075)
+nothing is split: both heads' first moves go out together, then each head's moves alone,
+always the head that has cut the shorter time, and together again where the two heads'
+summed times meet. With one feedrate register every combined block needs equal times on
+both heads: the longer move is split (core/multihead/split.py, SPLIT and CIRSEG).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterator
+from dataclasses import dataclass, field
+
+from gecent.core.errors import Diagnostic
+from gecent.core.machine.definition import MachineDefinition
+from gecent.core.multihead.dump import ScratchTape
+from gecent.core.multihead.gmout import GMOUT, mergeable
+from gecent.core.output.block import Block, Code
+from gecent.core.output.sinks import Sinks
+from gecent.core.statements.multihead import OP_PREFERRED, OP_SAFETY, OP_SFM
+
+TIME_EPSILON = 1e-9  # minutes: summed times closer than this have met
+
+
+@dataclass
+class HeadTape:
+    """One head's scratch tape being read (CREAD into AS2/AS3)."""
+
+    head: int
+    blocks: Iterator[Block]
+    waiting_op: int | None = None  # the OP/n it stopped at (IS23 / IS33)
+    op: Block | None = None  # that OP block: its restrictions (RPM/SFM, IPM, NONE)
+    finished: bool = False  # its FINI (CODE 18) has been read
+    fini: Block | None = None
+    held: list[Block] = field(default_factory=list)  # read ahead, not yet used
+
+    def next(self) -> Block | None:
+        if self.held:
+            return self.held.pop()
+        if self.finished:
+            return None
+        block = next(self.blocks, None)
+        if block is None or block.code is Code.FINI:
+            self.finished = True
+            self.fini = block
+            return None
+        return block
+
+
+class MergePass:
+    """GEMULT: sequences the two tapes by OP/n and merges the combined sections."""
+
+    def __init__(
+        self,
+        machine: MachineDefinition,
+        tapes: list[ScratchTape],
+        sinks: Sinks,
+        warn: Callable[[Diagnostic], None],
+    ) -> None:
+        self.machine = machine
+        self.tapes = [HeadTape(tape.head, tape.read()) for tape in tapes]
+        self.out = GMOUT(machine, sinks, warn)
+        self.two_feed_registers = machine.number_option(139) != 0
+
+    def run(self) -> None:
+        tapes = self.tapes
+        current = tapes[0]
+        while not all(t.finished and not t.held for t in tapes):
+            other = tapes[2 - current.head]
+            if current.finished and not current.held:
+                current = other
+                continue
+            block = current.next()
+            if block is None:
+                continue
+            if block.code is not Code.MULTIHEAD_1:
+                self.out.alone(block)
+                continue
+            if self._information(block):
+                continue
+            current.waiting_op = int(block.cells[2])  # type: ignore[arg-type]
+            current.op = block
+            if other.finished and not other.held:
+                current.waiting_op = None  # nothing to cut with: go on alone
+                continue
+            if other.waiting_op is None:
+                current = other  # read the other tape up to its OP block
+                continue
+            if current.waiting_op == other.waiting_op:
+                self._section()
+                current = tapes[0]
+                continue
+            current = min(tapes, key=lambda t: t.waiting_op or 0)
+            current.waiting_op = None
+        self.out.finish([t.fini for t in tapes])
+
+    def _information(self, block: Block) -> bool:
+        """SAFETY, SFM and PRFSEQ blocks set their conditions; False for an OP block."""
+        kind = int(block.cells[11])  # type: ignore[arg-type]
+        if kind == OP_PREFERRED:
+            self.out.preferred = int(block.cells[8])  # type: ignore[arg-type]
+            return True
+        return kind in (OP_SAFETY, OP_SFM)
+
+    def _section(self) -> None:
+        """A combined section: both heads at the same OP/n (001 L7318-7330)."""
+        first, second = self.tapes
+        assert first.op is not None and second.op is not None
+        self.out.start_section(first.op, second.op)
+        for tape in self.tapes:
+            tape.waiting_op = None
+        moves = [self._moves(tape) for tape in self.tapes]
+        if self.two_feed_registers:
+            self._by_summed_times(moves)
+        else:
+            self._by_equal_times(moves)
+        self.out.end_section()
+
+    def _moves(self, tape: HeadTape) -> Iterator[Block]:
+        """A head's mergeable blocks up to its next OP block (or FINI); the others go out
+        alone as they are met (001 L7649-7660)."""
+        while True:
+            block = tape.next()
+            if block is None:
+                return
+            if block.code is Code.MULTIHEAD_1:
+                if self._information(block):
+                    continue
+                tape.held.append(block)  # the next OP: the sequencing reads it again
+                return
+            if mergeable(block):
+                yield block
+            else:
+                self.out.alone(block)
+
+    def _by_summed_times(self, moves: list[Iterator[Block]]) -> None:
+        """Two feedrate registers (001 L2040-2075): the first moves together, then always
+        the head with the smaller summed time, together again where the sums meet."""
+        pending = [next(m, None) for m in moves]
+        summed = [0.0, 0.0]
+        while pending[0] is not None or pending[1] is not None:
+            first, second = pending
+            if (
+                first is not None
+                and second is not None
+                and abs(summed[0] - summed[1]) <= TIME_EPSILON
+                and self.out.combinable(first, second)
+            ):
+                summed[0] += first.cut_minutes + first.dwell_minutes
+                summed[1] += second.cut_minutes + second.dwell_minutes
+                self.out.combined(first, second)
+                pending = [next(moves[0], None), next(moves[1], None)]
+                continue
+            index = 0 if second is None or (first is not None and summed[0] <= summed[1]) else 1
+            block = pending[index]
+            assert block is not None
+            summed[index] += block.cut_minutes + block.dwell_minutes
+            self.out.alone(block)
+            pending[index] = next(moves[index], None)
+
+    def _by_equal_times(self, moves: list[Iterator[Block]]) -> None:
+        from gecent.core.multihead.equal_time import merge_equal_times
+
+        merge_equal_times(self.machine, moves, self.out)

@@ -1,0 +1,309 @@
+"""GMOUT, the output of the merge pass (manual §3.4.8.2.2, 001 L8404-8792): a head's block
+alone goes through GEOUT with that head's registers; two blocks cut together become one
+tape block, head 1's words then head 2's before one end of block (GMHBUF 1-20 and 21-40,
+001 L9812-9882), with CODE +17 when head 1 is the primary head, -17 when head 2 is.
+
+Registers both heads name with the same letter are one register on the control (the
+spindle of a two-head lathe, a single G or F register): a combined block carries one
+value, the preferred head's (PRFSEQ; by default head 2's, "the head-2 value is stored
+into the corresponding head-1 cell", 001 L8662-8676). With one G register (option 152 =
+0) the G is chosen for both heads' moves: the dimension code of the larger move, or the
+circular head's code, the linear head then carrying its "arc-centre offsets" (001
+L8737-8785).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from math import hypot
+
+from gecent.core.absent import ABSENT
+from gecent.core.errors import Diagnostic
+from gecent.core.machine.definition import MachineDefinition
+from gecent.core.multihead.heads import head_machine
+from gecent.core.output.block import TEXT_CODES, Block, Code
+from gecent.core.output.element import CIRCLE_CODES, OutputElement
+from gecent.core.output.sinks import Sinks
+from gecent.core.state import PostState
+
+MERGEABLE = frozenset({Code.LINEAR, Code.DWELL}) | CIRCLE_CODES
+SHARABLE_CELLS = (1, 2, 11, 12, 13, 14, 17, *range(21, 31))
+# option 156: which (head 1, head 2) interpolation pairs the control can cut together
+# (L = linear or dwell, C = circular; 001 L26218-26228)
+MODE_PAIRS = {
+    0: {("L", "L")},
+    1: {("L", "L"), ("C", "L")},
+    2: {("L", "L"), ("C", "C")},
+    3: {("L", "L"), ("C", "L"), ("C", "C"), ("L", "C")},
+}
+
+
+def mergeable(block: Block) -> bool:
+    """Lines, dwells and circles merge (001 L7649-7660); a rapid move is left alone: a
+    positioning move has no cut to share."""
+    return block.code in MERGEABLE and not block.rapid
+
+
+def _mode(block: Block) -> str:
+    return "C" if block.code in CIRCLE_CODES else "L"
+
+
+def _time(block: Block) -> float:
+    return block.cut_minutes + block.dwell_minutes
+
+
+class HeadConverter:
+    """A head's GEOUT conversion in the merge pass: its registers, its redundancy tests."""
+
+    def __init__(self, machine: MachineDefinition, head: int) -> None:
+        self.head = head
+        self.machine = head_machine(machine, head)
+        self.element = OutputElement(PostState(self.machine))
+        self.letters = self.machine.registers.letters
+
+    def convert(self, block: Block) -> None:
+        block.head = self.head
+        if block.code in TEXT_CODES or block.punch is not None or block.code is Code.FROM:
+            return  # text, FROM, and the TMARK the first pass finished already
+        if block.code in (Code.LEADER, Code.FINI, Code.INFORMATION, Code.RESET):
+            return
+        self.element.convert(block)
+
+    def refinish(self, block: Block, ipm: float) -> None:
+        """A piece of a split (or slowed) move: its dimension G, feed command and time
+        worked out again, as OUTPUT works them out in the first pass (GMOTIN)."""
+        feed = self.element.state.feed
+        feed.ipm = ipm
+        feed.programmed = ipm
+        feed.rapid_ipm = 0.0
+        self.element._motion(block)
+
+    def refeed(self, block: Block, code: float) -> None:
+        """A linear move under another dimension G code (one G register for both heads):
+        its feed command is worked out again with that code's multiplier."""
+        element = self.element
+        for candidate in element.linear_codes.codes:
+            if candidate is not None and candidate.code == code:
+                break
+        else:
+            return
+        assert block.steps is not None
+        length = sum((s * element.step) ** 2 for s in block.steps) ** 0.5
+        ipm = float(block.cells[19]) if block.cells[19] is not ABSENT else 0.0
+        if ipm <= 0 or block.cells[11] is ABSENT:
+            return
+        command, _, f_format = element.feed.command(
+            ipm, candidate.gdimul, length, candidate.size_class
+        )
+        block.cells[11] = command
+        block.f_format = f_format
+
+
+class GMOUT:
+    def __init__(
+        self, machine: MachineDefinition, sinks: Sinks, warn: Callable[[Diagnostic], None]
+    ) -> None:
+        self.machine = machine
+        self.sinks = sinks
+        self.warn = warn
+        self.heads = (HeadConverter(machine, 1), HeadConverter(machine, 2))
+        self.preferred = 2
+        self.one_g_register = machine.number_option(152) == 0
+        self.one_f_register = machine.number_option(139) == 0
+        self.pairs = MODE_PAIRS.get(int(machine.number_option(156)), MODE_PAIRS[0])
+        first, second = (h.letters for h in self.heads)
+        self.shared = tuple(
+            cell
+            for cell in SHARABLE_CELLS
+            if cell < len(first) and first[cell] and first[cell] == second[cell]
+        )
+        self.cut_minutes = 0.0
+        self.dwell_minutes = 0.0
+        self.summed: list[float] | None = None  # each head's time in a combined section
+        self.tolerances: tuple[float, float] | None = None  # OP's RPM/SFM and IPM bands
+
+    # -- sections ---------------------------------------------------------------------
+
+    def start_section(self, first_op: Block, second_op: Block) -> None:
+        """The heads' OP blocks give the section's restrictions (001 L7626-7645): the
+        tolerance bands in percent, unless either says NONE (DBFSEG(11) = 2)."""
+        self.summed = [0.0, 0.0]
+        self.tolerances = None
+        ops = (first_op, second_op)
+        if all(op.cells[11] == 0.0 for op in ops):
+            bands = [op.cells[k] for op in ops for k in (9, 10) if op.cells[k] is not ABSENT]
+            if bands:
+                # the tighter of the two heads' bands holds
+                spindle = min(float(op.cells[9]) for op in ops if op.cells[9] is not ABSENT)
+                feed = min(float(op.cells[10]) for op in ops if op.cells[10] is not ABSENT)
+                self.tolerances = (spindle, feed)
+
+    def end_section(self) -> None:
+        self.summed = None
+        self.tolerances = None
+
+    def combinable(self, first: Block, second: Block) -> bool:
+        """The control can cut the pair together (option 156) and the pair keeps within
+        the OP tolerance bands; a pair outside them is cut one head after the other, with
+        the diagnostic."""
+        if (_mode(first), _mode(second)) not in self.pairs:
+            return False
+        if self.tolerances is None:
+            return True
+        spindle, feed = self.tolerances
+        for cell, band, what in ((20, spindle, "SPINDLE SPEEDS"), (19, feed, "FEEDRATES")):
+            a, b = first.cells[cell], second.cells[cell]
+            if a is ABSENT or b is ABSENT:
+                continue
+            a, b = float(a), float(b)
+            if max(a, b) > 0 and abs(a - b) / max(a, b) * 100.0 > band:
+                self.warn(
+                    Diagnostic(
+                        f"HEADS NOT CUT TOGETHER: THEIR {what} DIFFER BY MORE THAN THE "
+                        f"OP TOLERANCE OF {band:g} PERCENT",
+                        None,
+                    )
+                )
+                return False
+        return True
+
+    # -- output -----------------------------------------------------------------------
+
+    def alone(self, block: Block) -> None:
+        """GMOUT(IH = 1 or 2): a head's block by itself."""
+        head = block.head or 1
+        self._account(block, head)
+        self.heads[head - 1].convert(block)
+        self._emit(block)
+
+    def combined(self, first: Block, second: Block) -> None:
+        """GMOUT(IH = 3 or 4): both heads' blocks in one tape block."""
+        self._account_pair(first, second)
+        primary = self.preferred
+        circle_first, circle_second = (b.code in CIRCLE_CODES for b in (first, second))
+        if circle_first != circle_second:
+            primary = 1 if circle_first else 2  # the sign points at the circular head
+        if self.one_g_register:
+            self._one_g(first, second)
+        for cell in self.shared:
+            self._share(cell, first, second, primary)
+        if self.one_f_register and 11 not in self.shared:
+            # one F register under two letters: GMHBUF(11) takes the primary head's command
+            # (001 L8726-8733), and the control's F is then that one
+            if primary == 2 and second.cells[11] is not ABSENT:
+                first.cells[11] = second.cells[11]
+            second.cells[11] = ABSENT
+        self.heads[0].convert(first)
+        self.heads[1].convert(second)
+        if self.one_f_register:
+            for head in self.heads:  # the one register holds the primary's F now
+                head.element.words.previous_f = ABSENT
+        code = Code.MULTIHEAD_1 if primary == 1 else Code.MULTIHEAD_2
+        block = Block(code, first.record if first.record is not None else second.record)
+        block.cells[15] = float(int(code))
+        block.halves = (first, second)
+        block.head = primary
+        block.cut_minutes = first.cut_minutes
+        block.dwell_minutes = first.dwell_minutes
+        separator = self.heads[0].element.separator
+        parts = [p for p in (first.punch, second.punch) if p]
+        block.punch = separator.join(parts)
+        self.sinks.emit(block)
+
+    def finish(self, finis: list[Block | None]) -> None:
+        """One FINI closes the merged output (the tapes each had theirs)."""
+        fini = next((f for f in finis if f is not None), None)
+        if fini is not None:
+            self.sinks.emit(fini)
+
+    # -- helpers ----------------------------------------------------------------------
+
+    def _emit(self, block: Block) -> None:
+        if block.code in (Code.INFORMATION, Code.RESET):
+            return
+        self.sinks.emit(block)
+
+    def _one_g(self, first: Block, second: Block) -> None:
+        circles = [b for b in (first, second) if b.code in CIRCLE_CODES]
+        if circles:
+            (circle,) = circles  # (option 156 lets two circles through only with two G's)
+            line = second if circle is first else first
+            self._arc_centre_offsets(circle, line)
+            return
+        # both straight: the dimension code of the larger move serves both
+        converter = self.heads[0]
+        largest = max(
+            (abs(s) for b in (first, second) if b.steps is not None for s in b.steps), default=0
+        )
+        if first.code is Code.DWELL or second.code is Code.DWELL:
+            return
+        code = converter.element.linear_codes.select(largest)
+        for head, block in zip(self.heads, (first, second), strict=True):
+            if block.cells[2] != float(code.code):
+                block.cells[2] = float(code.code)
+                head.refeed(block, float(code.code))
+
+    def _arc_centre_offsets(self, circle: Block, line: Block) -> None:
+        """The linear head's I, J, K under one G register (001 L8752-8777): its departures
+        over the half angle of the circular head's chord, as the manual writes them."""
+        from gecent.core.multihead.split import linear_head_offsets
+
+        step = self.heads[0].element.step
+        chord = tuple(s * step for s in (circle.steps or (0, 0, 0)))
+        offsets = tuple(0.0 if v is ABSENT else float(v) for v in circle.cells[8:11])
+        if not any(offsets) and circle.radius is not None:
+            offsets = (circle.radius, 0.0, 0.0)
+        departures = tuple(s * step for s in (line.steps or (0, 0, 0)))
+        for axis, value in enumerate(linear_head_offsets(chord, offsets, departures)):
+            line.cells[8 + axis] = abs(value) if hypot(*departures) else ABSENT
+        line.cells[2] = ABSENT
+
+    def _share(self, cell: int, first: Block, second: Block, primary: int) -> None:
+        a, b = first.cells[cell], second.cells[cell]
+        if b is ABSENT:
+            return
+        second.cells[cell] = ABSENT
+        if a is ABSENT or a == b:
+            first.cells[cell] = b
+            return
+        keep = primary if cell == 11 else self.preferred
+        if cell == 14:  # two M codes cannot share a word: the other goes out first
+            other = b if keep == 1 else a
+            aside = Block(Code.AUX_ONLY, first.record)
+            aside.cells[14] = other
+            aside.cells[15] = float(int(Code.AUX_ONLY))
+            self.alone_text(aside)
+        first.cells[cell] = a if keep == 1 else b
+
+    def alone_text(self, block: Block) -> None:
+        self.heads[0].convert(block)
+        self._emit(block)
+
+    def _account(self, block: Block, head: int) -> None:
+        """The program's time: outside a section each block's own; inside one the heads
+        cut at once, so a block adds only what it takes the run past the other head."""
+        summed = self.summed
+        if summed is None or block.code in TEXT_CODES:
+            self.cut_minutes += block.cut_minutes
+            self.dwell_minutes += block.dwell_minutes
+            return
+        before = max(summed)
+        summed[head - 1] += _time(block)
+        self._shorten(block, max(summed) - before)
+
+    def _account_pair(self, first: Block, second: Block) -> None:
+        summed = self.summed if self.summed is not None else [0.0, 0.0]
+        before = max(summed)
+        summed[0] += _time(first)
+        summed[1] += _time(second)
+        self._shorten(first, max(summed) - before)
+        second.cut_minutes = second.dwell_minutes = 0.0
+
+    def _shorten(self, block: Block, elapsed: float) -> None:
+        over = max(0.0, _time(block) - elapsed)
+        cut = max(0.0, block.cut_minutes - over)
+        over -= block.cut_minutes - cut
+        block.cut_minutes = cut
+        block.dwell_minutes = max(0.0, block.dwell_minutes - over)
+        self.cut_minutes += block.cut_minutes
+        self.dwell_minutes += block.dwell_minutes

@@ -1,0 +1,63 @@
+"""Posting a multihead program: the first pass into the scratch tapes, the merge pass into
+the outputs (manual §3.4.8, 001 L7170-7359)."""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterator
+
+from gecent.core.cl.records import Record
+from gecent.core.errors import Diagnostic, GecentError, InternalError
+from gecent.core.machine.definition import MachineDefinition
+from gecent.core.multihead.first_pass import FirstPass
+from gecent.core.multihead.gemult import MergePass
+from gecent.core.output.sinks import CollectSink, Ending, Sinks
+from gecent.core.plugins import PluginSet
+from gecent.core.state import RunResult
+
+
+def post_multihead(
+    machine: MachineDefinition,
+    plugins: PluginSet | None,
+    records: Iterator[Record],
+    sinks: Sinks | None,
+    report: Callable[[Diagnostic], None] | None,
+    max_segments: int,
+) -> RunResult:
+    """Both passes; the sinks are closed as a single-head run closes them: renamed into
+    place when the run finishes, discarded on bad input."""
+    result = RunResult(machine=machine)
+    if sinks is None:
+        sinks = Sinks([CollectSink(result.blocks)])
+
+    def warn(diagnostic: Diagnostic) -> None:
+        result.warnings += 1
+        if report is not None:
+            report(diagnostic)
+        else:
+            result.diagnostics.append(diagnostic)
+
+    first = FirstPass(machine, plugins, warn, max_segments)
+    try:
+        head_result = first.process(records)
+        # (the machine as the program left it: MACHIN may have changed options)
+        merge = MergePass(first.runs[0].machine, first.tapes, sinks, warn)
+        merge.run()
+    except GecentError:
+        first.remove()
+        sinks.close(Ending(False))
+        raise
+    except Exception as error:
+        first.remove()
+        sinks.close(Ending(False))
+        raise InternalError(error, None) from error
+    except BaseException:
+        first.remove()
+        sinks.close(Ending(False))
+        raise
+    first.remove()
+    result.records = head_result.records
+    result.partno = head_result.partno
+    result.cut_minutes = merge.out.cut_minutes
+    result.dwell_minutes = merge.out.dwell_minutes
+    sinks.close(Ending(True))
+    return result
