@@ -171,6 +171,16 @@ class SpindleElement:
         self._ladder = self._speed_ladder(spindle.range)
         sfm.driver = self
         self.state.remember(SFM, request.surface_feet)
+        if self.state.head:
+            # a multihead program's SFM information block (CODE 17, DBFSEG(11) = 4): the
+            # merge pass compares the heads' surface speeds (001 L7336-7346, L7626-7645)
+            block = Block(Code.MULTIHEAD_1, statement.number)
+            block.cells[2] = float(self.state.multihead_op)
+            block.cells[3] = request.surface_feet
+            block.cells[8] = float(self.state.head)
+            block.cells[11] = 4.0
+            block.cells[15] = float(Code.MULTIHEAD_1)
+            self.output.emit(block)
 
     def _starting_range(self, requested_range: int | None) -> int:
         """The range SFM will lock: RANGE,r; else the present one of a turning spindle; else

@@ -12,7 +12,7 @@ from pathlib import Path
 import pytest
 from gecent.core.cl.records import Comment
 from gecent.core.dispatch.post import post
-from gecent.core.errors import InputError
+from gecent.core.errors import InputError, NotYetSupported
 from gecent.core.macros.dialect import read_raw
 from gecent.core.output.block import Block, Code
 from gecent.core.output.tape import tape_line
@@ -119,3 +119,141 @@ def test_the_example_program_posts(plugins: PluginSet) -> None:
     result = post(str(ROOT / "examples" / "twohead_mach51.apt"), plugins)
     assert result.warnings == 0
     assert any(b.halves is not None for b in result.blocks)
+
+
+EXAMPLE = ROOT / "examples" / "twohead_mach51.apt"
+
+
+def _one_feed_register(tmp_path: Path, source: Path) -> Path:
+    """The program with MACH51's second feedrate register turned off (option 139 = 0):
+    the equal-time method."""
+    program = tmp_path / source.name
+    program.write_text(
+        source.read_text().replace("MACHIN/GECENT,51", "MACHIN/GECENT,51,OPTAB,139,0")
+    )
+    return program
+
+
+def _head_blocks(blocks: list[Block]) -> dict[int, list[Block]]:
+    heads: dict[int, list[Block]] = {1: [], 2: []}
+    for block in blocks:
+        for part in block.halves or (block,):
+            if part.steps is not None and part.code is not Code.FROM:
+                heads[part.head].append(part)
+    return heads
+
+
+@pytest.mark.parametrize("one_register", [False, True])
+def test_every_head_reaches_its_points(
+    plugins: PluginSet, tmp_path: Path, one_register: bool
+) -> None:
+    """Split or not, each head's departures add up, block after block, to the points its
+    CL records reach: no step is lost or doubled by a split."""
+    program = _one_feed_register(tmp_path, EXAMPLE) if one_register else EXAMPLE
+    result = post(str(program), plugins)
+    starts = {1: (60000, 40000), 2: (70000, 50000)}  # the FROMs in steps of 0.0001 in
+    for head, blocks in _head_blocks(result.blocks).items():
+        at = list(starts[head])
+        for block in blocks:
+            assert block.steps is not None and block.position is not None
+            steps = block.steps[:2]  # (a circle's block carries the third, zero)
+            at = [a + s for a, s in zip(at, steps, strict=True)]
+            assert tuple(at) == block.position[:2]
+    assert any(b.halves for b in result.blocks)
+
+
+def test_one_feed_register_gives_both_heads_one_time(plugins: PluginSet, tmp_path: Path) -> None:
+    """With one F register every combined block takes one time on both heads (001
+    L7390-7530): the longer move is split, lines (SPLIT) and the circle (CIRSEG)."""
+    result = post(str(_one_feed_register(tmp_path, EXAMPLE)), plugins)
+    combined = [b for b in result.blocks if b.halves is not None]
+    assert len(combined) >= 5
+    circles = [b for b in combined if b.halves and b.halves[0].code is Code.CIRCLE_XY_CCLW]
+    assert len(circles) == 2  # the quarter circle cut in two against head 2's lines
+    for block in combined:
+        assert block.halves is not None
+        first, second = block.halves
+        feed = [float(h.cells[19]) for h in block.halves]  # type: ignore[arg-type]
+        times = []
+        for half, ipm in zip((first, second), feed, strict=True):
+            assert half.steps is not None
+            if half.code is Code.CIRCLE_XY_CCLW:
+                assert half.radius is not None
+                chord = sum((s * 0.0001) ** 2 for s in half.steps) ** 0.5
+                from math import asin
+
+                length = 2 * half.radius * asin(min(1.0, chord / (2 * half.radius)))
+            else:
+                length = sum((s * 0.0001) ** 2 for s in half.steps) ** 0.5
+            times.append(length / ipm)
+        # equal to the rounding of the pieces to whole steps
+        assert times[0] == pytest.approx(times[1], rel=2e-3, abs=2e-5)
+
+
+def test_prephd_enables_the_circle_on_its_head(plugins: PluginSet, tmp_path: Path) -> None:
+    """PREPHD (001 L34994-35040): TABLEG(16) = G18 on MACH51, in a block by itself before
+    head 1's circle, once while it is in effect."""
+    result = post(str(_one_feed_register(tmp_path, EXAMPLE)), plugins)
+    lines = [tape_line(b) for b in result.blocks]
+    g18 = [i for i, line in enumerate(lines) if line is not None and line.endswith("G18")]
+    assert len(g18) == 1
+    after = result.blocks[g18[0] + 1]
+    assert after.halves is not None and after.halves[0].code is Code.CIRCLE_XY_CCLW
+
+
+def test_a_common_axis_is_refused_by_name(plugins: PluginSet, tmp_path: Path) -> None:
+    program = tmp_path / "p.apt"
+    program.write_text(
+        SEQUENCING.read_text().replace("MACHIN/GECENT,51", "MACHIN/GECENT,51,OPTAB,155,1")
+    )
+    with pytest.raises(NotYetSupported, match="common axis of the heads"):
+        post(str(program), plugins)
+
+
+PARKING = DATA / "multihead" / "parking.apt"
+
+
+def test_a_broken_restriction_parks_the_other_head(plugins: PluginSet) -> None:
+    """Feeds of 10 and 5 IPM under OP/1,RPM,10,10 break the 10 % band (001 L7626-7645):
+    head 2 is withdrawn by its SAFETY (head 1 withdrawn with it and brought back), head 1
+    finishes its part, head 2 returns and finishes its own; a comment at each park."""
+    result = post(str(PARKING), plugins)
+    texts = [b.text for b in result.blocks if b.code is Code.COMMENT]
+    assert texts == ["HEAD 2 PARKED", "HEAD 2 RETURNED TO THE WORK"]
+    moves = [
+        tape_line(b)
+        for b in result.blocks
+        if b.halves is not None or (b.steps is not None and b.code is not Code.FROM)
+    ]
+    assert moves == [
+        "N014G11X+0005F0304U+0005E0304",  # both withdrawn at once
+        "N014G11X-0005",  # head 1 back to the work
+        "N014G01X-001F0100",
+        "N015G01Z-001",
+        "G11U-0005",  # head 2 returns
+        "G01U-001E0050",
+        "G01W-001",
+    ]
+    assert any("FEEDRATES DIFFER" in d.text for d in result.diagnostics)
+
+
+def test_without_safety_a_head_cannot_be_parked(plugins: PluginSet, tmp_path: Path) -> None:
+    program = tmp_path / "p.apt"
+    program.write_text(PARKING.read_text().replace("SAFETY/0.5,0,0\nFEDRAT/5", "FEDRAT/5"))
+    result = post(str(program), plugins)
+    assert "HEAD 2 NOT PARKED: NO SAFETY WAS GIVEN FOR IT" in [d.text for d in result.diagnostics]
+
+
+def test_op_none_lifts_the_restrictions(plugins: PluginSet, tmp_path: Path) -> None:
+    program = tmp_path / "p.apt"
+    program.write_text(PARKING.read_text().replace("OP/1,RPM,10,10\nGOTO/6", "OP/1,NONE\nGOTO/6"))
+    result = post(str(program), plugins)
+    assert not [b for b in result.blocks if b.code is Code.COMMENT]
+    assert any(b.halves for b in result.blocks)
+
+
+def test_safety_on_a_single_head_program_is_not_built(plugins: PluginSet, tmp_path: Path) -> None:
+    program = tmp_path / "p.apt"
+    program.write_text("PARTNO P\nMACHIN/GECENT,23\nSAFETY/0.5,0,0\nFINI\n")
+    with pytest.raises(NotYetSupported, match="SAFETY statement"):
+        post(str(program), plugins)

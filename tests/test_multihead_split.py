@@ -558,3 +558,26 @@ def test_rule_2_gives_equal_times_by_feed_reduction(
     quicker = Move.line((quicker_time * feed, 0.0, 0.0), feed).slowed(step.feed_factor)
     assert quicker.time == pytest.approx(max(time_1, time_2), rel=1e-12)
     assert quicker.feed <= feed
+
+
+def test_w5_gfdlim_divides_below_fcomax() -> None:
+    """Spec 08 W-5 (GFDLIM, 001 L32886-32903): f = 500, FCOMAX = 500, departures (3, 4):
+    FRN = 10 x 500 / 5 = 1000; the divisor is 3, not 2 (1000 / 2 = 500 is not below 500):
+    FRN 333.3, I = 9, J = 12. The merge pass's GMOTIN divides so; the first pass's CONTUR
+    stops at the maximum "or below" (001 L12470-12480) and takes 2."""
+    from gecent.core.feed.contour import FeedCommand
+    from gecent.core.machine import standard_machine
+
+    machine = standard_machine().with_options({24: 500.0, 10: 0.0, 26: 0.0})
+    feed = FeedCommand(machine)
+    assert feed.multiplier(500.0, 10.0, 5.0, 2) is not None
+    assert feed.multiplier(500.0, 10.0, 5.0, 2)[0] == 2  # type: ignore[index]
+    feed.strictly_below = True
+    found = feed.multiplier(500.0, 10.0, 5.0, 2)
+    assert found is not None
+    constant, command, _ = found
+    assert constant == 3
+    # 1000 / 3 = 333.3, rounded to the Standard Machine's F format (no decimals)
+    assert command == 333.0
+    # I, J, K carry the departures times the divisor (FeedOptimiser.multiplied)
+    assert (3 * constant, 4 * constant) == (9, 12)

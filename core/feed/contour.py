@@ -12,7 +12,7 @@ L10799-10815), for the absolute printout; commands are rounded half-up to the F 
 
 from __future__ import annotations
 
-from math import ceil
+from math import ceil, floor
 
 from gecent.core.errors import NotYetSupported
 from gecent.core.feed.magic3 import decode, magic3
@@ -52,6 +52,9 @@ class FeedCommand:
         self.decimals = fmt.right if fmt is not None else 0
         self.maximum = machine.number_option(24)
         self.minimum = machine.number_option(49)
+        # the merge pass's GFDLIM divides until the command is below FCOMAX, not at it
+        # (001 L32886-32903; CONTUR's "or below", L12470-12480: docs/decisions.md)
+        self.strictly_below = False
         if self.form not in (0, 1, -1, -2, -3, -4):
             raise NotYetSupported(f"contouring feed command form option 10 = {self.form:g}")
 
@@ -96,7 +99,10 @@ class FeedCommand:
             command, decimals = ipm / length, int(regfor) % 10
         if command <= highest:
             return None
-        constant = ceil(command / highest - 1e-9)  # to the maximum "or below" (L12470-12480)
+        if self.strictly_below:
+            constant = floor(command / highest + 1e-9) + 1  # GFDLIM: "less than" FCOMAX
+        else:
+            constant = ceil(command / highest - 1e-9)  # to the maximum "or below" (L12470-12480)
         return constant, float(half_up(command / constant, decimals)), regfor
 
     def _row(self, location: int) -> tuple[float, float, float]:

@@ -7,7 +7,7 @@ from __future__ import annotations
 from gecent.core.feed.contour import FeedCommand
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.motion.gcode import LinearCodes
-from gecent.core.motion.segments import segments
+from gecent.core.motion.segments import segment_place, segments
 from gecent.core.output.block import Block, Code
 
 
@@ -54,11 +54,11 @@ class FeedOptimiser:
                 continue
             start = [p - s for p, s in zip(block.position, block.steps, strict=True)]
             parts = []
-            for steps in segments(block.steps, count):
+            for index, steps in enumerate(segments(block.steps, count)):
                 start = [a + s for a, s in zip(start, steps, strict=True)]
-                parts.append(
-                    Block.motion(Code.LINEAR, block.record or 0, steps, tuple(start), self.step)
-                )
+                part = Block.motion(Code.LINEAR, block.record or 0, steps, tuple(start), self.step)
+                part.segment = segment_place(index, count, block.segment)
+                parts.append(part)
             return parts
         return None
 

@@ -19,7 +19,7 @@ from gecent.core.cl.records import Motion, MotionSubtype
 from gecent.core.errors import InputError
 from gecent.core.motion.guard import check_segments
 from gecent.core.motion.rounding import to_steps
-from gecent.core.motion.segments import segment_count, segments
+from gecent.core.motion.segments import segment_count, segment_place, segments
 from gecent.core.motion.sfm import surface_cuts
 from gecent.core.output.block import Block, Code
 from gecent.core.state import Position, PostState
@@ -116,7 +116,8 @@ class LinearMotion:
         reached = list(position.previous[:3])
         carry = [0] * self.axes
         surface = self.state.sfm.active and not self.state.feed.rapid_ipm
-        for part in segments(departures, count) if count > 1 else (tuple(departures),):
+        parts = segments(departures, count) if count > 1 else (tuple(departures),)
+        for index, part in enumerate(parts):
             if coarse:
                 part = _truncated_to_thousandths(part, carry)
             start = tuple(reached)
@@ -125,7 +126,9 @@ class LinearMotion:
             if surface:
                 self._surface_cut(record, start, tuple(reached))
             else:
-                self.emit(Block.motion(Code.LINEAR, record.number, part, tuple(reached), self.step))
+                block = Block.motion(Code.LINEAR, record.number, part, tuple(reached), self.step)
+                block.segment = segment_place(index, count)
+                self.emit(block)
         if coarse:
             # the truncated remnant is taken off the present point, so the next departure
             # recovers it (truncate and carry, 001 L16200-16245)

@@ -20,6 +20,7 @@ from dataclasses import dataclass
 from gecent.core.cl.records import Statement, Word
 from gecent.core.errors import Diagnostic, InputError, NotYetSupported
 from gecent.core.motion.rounding import to_steps
+from gecent.core.motion.segments import segment_place
 from gecent.core.output.block import Block, Code
 from gecent.core.state import PostState
 
@@ -149,12 +150,12 @@ class RotaryElement:
         departures, self.carries[cell] = carried_departures(
             sign * move.travel * self.per_degree, self.maximum, self.step, self.carries[cell]
         )
-        for steps in departures:
-            if steps == 0:
-                continue
+        moves = [steps for steps in departures if steps != 0]
+        for index, steps in enumerate(moves):
             block = Block(Code.ROTARY_INCREMENTAL, statement.number)
             block.cells[cell] = steps * self.step
             block.rotary = (cell, abs(steps * self.step) / self.per_degree)
+            block.segment = segment_place(index, len(moves))
             self.emit(block)
 
 

@@ -26,6 +26,19 @@ def segment_count(departures: Sequence[int], limits: Sequence[int]) -> int:
     return int(worst) + 1 if worst else 1
 
 
+def segment_place(
+    index: int, count: int, whole: tuple[bool, bool] | None = None
+) -> tuple[bool, bool] | None:
+    """Where segment ``index`` (from 0) of ``count`` lies in the departure that was
+    segmented: (first, last); ``whole`` is the place of the block it was cut from, when
+    that block is a segment itself. None: a departure left whole (``count`` = 1). Option
+    17's digit 2 prints only the first and last (001 L24571-24591)."""
+    if count == 1:
+        return whole
+    first, last = whole or (True, True)
+    return (first and index == 0, last and index == count - 1)
+
+
 def segments(departures: Sequence[int], count: int) -> Iterator[tuple[int, ...]]:
     """The per-segment departures, in steps, of a move split into ``count`` segments.
 

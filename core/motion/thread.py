@@ -29,7 +29,7 @@ from gecent.core.errors import Diagnostic, InputError, SourcePosition
 from gecent.core.machine.shuffle import cell_map
 from gecent.core.motion.guard import check_segments
 from gecent.core.motion.linear import LinearMotion
-from gecent.core.motion.segments import segment_count, segments
+from gecent.core.motion.segments import segment_count, segment_place, segments
 from gecent.core.output.block import Block, Code
 from gecent.core.spindle import TOO_FAST_FOR_THREADING, assumed_speed
 from gecent.core.state import PostState
@@ -224,7 +224,8 @@ class ThreadElement:
         k = self._scale(target[0], record.where)
         regfor = self.state.machine.registers.regfor[target[0]]
         speed = self.state.spindle.speed or 0.0
-        for part in segments(departures, count) if count > 1 else (tuple(departures),):
+        parts = segments(departures, count) if count > 1 else (tuple(departures),)
+        for index, part in enumerate(parts):
             for a, steps in enumerate(part):
                 reached[a] += steps
             along = abs(part[axis]) * self.step
@@ -232,6 +233,7 @@ class ThreadElement:
             end = _lead_at(lead, rate, done + along, record.where)
             done += along
             block = self._block(record, part, tuple(reached), axis, start, rate, k, regfor)
+            block.segment = segment_place(index, count)
             block.cells[19] = speed * _vector_length(part, axis, start)
             if float(block.cells[19]) > self.state.machine.number_option(25):  # type: ignore[arg-type]
                 self.warn(Diagnostic(MAXIPM_EXCEEDED, record.where))

@@ -17,10 +17,12 @@ from gecent.core.errors import NotYetSupported
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.multihead.gmout import GMOUT, HeadConverter
 from gecent.core.multihead.split import (
+    MergeRule,
     Move,
     Plane,
     arc_sweep,
-    equal_time_merge,
+    equal_time_step,
+    split_move,
     tape_reader_limit,
 )
 from gecent.core.output.block import Block, Code
@@ -30,22 +32,67 @@ from gecent.core.output.element import CIRCLE_CODES
 PLANES = {10: Plane.XY, 11: Plane.ZX, 12: Plane.YZ}
 
 
-def merge_equal_times(machine: MachineDefinition, moves: list[Iterator[Block]], out: GMOUT) -> None:
+def merge_equal_times(
+    machine: MachineDefinition, moves: list[Iterator[Block]], out: GMOUT
+) -> list[Block | None] | None:
+    """The GMLINE/GMCIRL loop over both heads' moves; the moves not yet output (a split's
+    rest among them) are returned when a restriction stops the combined cut."""
     tmax = tape_reader_limit(machine.number_option(13), machine.number_option(69))
     band = machine.number_option(151)
     heads = [
         _HeadMoves(converter, blocks) for converter, blocks in zip(out.heads, moves, strict=True)
     ]
-    pairs = equal_time_merge(heads[0].moves(), heads[1].moves(), tmax, band)
-    for pair in pairs:
-        first = heads[0].block(pair.head_1)
-        second = heads[1].block(pair.head_2)
-        if first is not None and second is not None and out.combinable(first, second):
-            out.combined(first, second)
+    one, two = heads[0].moves(), heads[1].moves()
+    move_1, move_2 = next(one, None), next(two, None)
+    while move_1 is not None and move_2 is not None:
+        if out.restricted(_source(move_1), _source(move_2)):
+            return [heads[0].block(move_1), heads[1].block(move_2)]
+        if move_1.time == 0.0 or move_2.time == 0.0:
+            index = 0 if move_1.time == 0.0 else 1
+            _out(out, heads[index].block(move_1 if index == 0 else move_2), None)
+            if index == 0:
+                move_1 = next(one, None)
+            else:
+                move_2 = next(two, None)
             continue
-        for block in (first, second):
-            if block is not None:
-                out.alone(block)
+        step = equal_time_step(move_1.time, move_2.time, tmax, band)
+        if step.rule is MergeRule.SPLIT and step.head == 1:
+            piece, move_1 = split_move(move_1, step.fraction)
+            _out(out, heads[0].block(piece), heads[1].block(move_2))
+            move_2 = next(two, None)
+            continue
+        if step.rule is MergeRule.SPLIT:
+            piece, move_2 = split_move(move_2, step.fraction)
+            _out(out, heads[0].block(move_1), heads[1].block(piece))
+            move_1 = next(one, None)
+            continue
+        if step.head == 1:
+            move_1 = move_1.slowed(step.feed_factor)
+        elif step.head == 2:
+            move_2 = move_2.slowed(step.feed_factor)
+        _out(out, heads[0].block(move_1), heads[1].block(move_2))
+        move_1, move_2 = next(one, None), next(two, None)
+    # one head is done: the other's moves go out alone (Rule 1: the finished head waits)
+    for move, rest, head in ((move_1, one, heads[0]), (move_2, two, heads[1])):
+        while move is not None:
+            _out(out, head.block(move), None)
+            move = next(rest, None)
+    return None
+
+
+def _source(move: Move) -> Block:
+    assert isinstance(move.source, Block)
+    return move.source
+
+
+def _out(out: GMOUT, first: Block | None, second: Block | None) -> None:
+    """A pair together when the control can cut it so, else each alone."""
+    if first is not None and second is not None and out.combinable(first, second):
+        out.combined(first, second)
+        return
+    for block in (first, second):
+        if block is not None:
+            out.alone(block)
 
 
 class _HeadMoves:

@@ -16,9 +16,10 @@ from __future__ import annotations
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
 
-from gecent.core.errors import Diagnostic
+from gecent.core.errors import Diagnostic, NotYetSupported
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.multihead.dump import ScratchTape
+from gecent.core.multihead.equal_time import merge_equal_times
 from gecent.core.multihead.gmout import GMOUT, mergeable
 from gecent.core.output.block import Block, Code
 from gecent.core.output.sinks import Sinks
@@ -62,6 +63,11 @@ class MergePass:
         sinks: Sinks,
         warn: Callable[[Diagnostic], None],
     ) -> None:
+        if machine.number_option(155) != 0:
+            raise NotYetSupported(
+                "a common axis of the heads (option 155): FXMULT's segmentation and the "
+                "parking of the heads (manual §3.4.8.2.1.3)"
+            )
         self.machine = machine
         self.tapes = [HeadTape(tape.head, tape.read()) for tape in tapes]
         self.out = GMOUT(machine, sinks, warn)
@@ -105,7 +111,10 @@ class MergePass:
         if kind == OP_PREFERRED:
             self.out.preferred = int(block.cells[8])  # type: ignore[arg-type]
             return True
-        return kind in (OP_SAFETY, OP_SFM)
+        if kind in (OP_SAFETY, OP_SFM):
+            self.out.information(block)
+            return True
+        return False
 
     def _section(self) -> None:
         """A combined section: both heads at the same OP/n (001 L7318-7330)."""
@@ -116,9 +125,11 @@ class MergePass:
             tape.waiting_op = None
         moves = [self._moves(tape) for tape in self.tapes]
         if self.two_feed_registers:
-            self._by_summed_times(moves)
+            left = self._by_summed_times(moves)
         else:
-            self._by_equal_times(moves)
+            left = merge_equal_times(self.machine, moves, self.out)
+        if left is not None:
+            self._one_after_the_other(left, moves)
         self.out.end_section()
 
     def _moves(self, tape: HeadTape) -> Iterator[Block]:
@@ -138,13 +149,16 @@ class MergePass:
             else:
                 self.out.alone(block)
 
-    def _by_summed_times(self, moves: list[Iterator[Block]]) -> None:
+    def _by_summed_times(self, moves: list[Iterator[Block]]) -> list[Block | None] | None:
         """Two feedrate registers (001 L2040-2075): the first moves together, then always
-        the head with the smaller summed time, together again where the sums meet."""
+        the head with the smaller summed time, together again where the sums meet. The
+        moves not yet output when a restriction stops the combined cut are returned."""
         pending = [next(m, None) for m in moves]
         summed = [0.0, 0.0]
         while pending[0] is not None or pending[1] is not None:
             first, second = pending
+            if first is not None and second is not None and self.out.restricted(first, second):
+                return pending
             if (
                 first is not None
                 and second is not None
@@ -162,8 +176,25 @@ class MergePass:
             summed[index] += block.cut_minutes + block.dwell_minutes
             self.out.alone(block)
             pending[index] = next(moves[index], None)
+        return None
 
-    def _by_equal_times(self, moves: list[Iterator[Block]]) -> None:
-        from gecent.core.multihead.equal_time import merge_equal_times
-
-        merge_equal_times(self.machine, moves, self.out)
+    def _one_after_the_other(
+        self, pending: list[Block | None], moves: list[Iterator[Block]]
+    ) -> None:
+        """A restriction is broken (001 L7640-7645): the other head is withdrawn while the
+        preferred head finishes its part of the section; then it returns and finishes
+        its own. The times add up: the heads no longer cut at once."""
+        out = self.out
+        out.summed = None
+        keep = out.preferred
+        parked = 3 - keep
+        record = next((b.record for b in pending if b is not None), None)
+        out.park(parked, record)
+        for head in (keep, parked):
+            if head == parked:
+                out.unpark(parked, record)
+            block = pending[head - 1]
+            if block is not None:
+                out.alone(block)
+            for block in moves[head - 1]:
+                out.alone(block)

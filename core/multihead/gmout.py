@@ -14,11 +14,12 @@ L8737-8785).
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Iterable
 from math import hypot
 
-from gecent.core.absent import ABSENT
+from gecent.core.absent import ABSENT, Absent
 from gecent.core.errors import Diagnostic
+from gecent.core.feed.rapid import RapidTraverse
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.multihead.heads import head_machine
 from gecent.core.output.block import TEXT_CODES, Block, Code
@@ -59,6 +60,7 @@ class HeadConverter:
         self.head = head
         self.machine = head_machine(machine, head)
         self.element = OutputElement(PostState(self.machine))
+        self.element.feed.strictly_below = True  # GMOTIN's GFDLIM (001 L32852-32912)
         self.letters = self.machine.registers.letters
 
     def convert(self, block: Block) -> None:
@@ -77,6 +79,40 @@ class HeadConverter:
         feed.programmed = ipm
         feed.rapid_ipm = 0.0
         self.element._motion(block)
+
+    def rapid_move(
+        self, departures: tuple[float, ...], at: tuple[int, ...], record: int | None
+    ) -> tuple[list[Block], Block, list[Block]]:
+        """A rapid move of this head from ``at`` (steps), as RAPID makes it in the first
+        pass: the gear shifts into rapid before it (riding in it or in blocks of their
+        own) and back after; (blocks before, the move, blocks after), not yet converted."""
+        element = self.element
+        step = element.step
+        made: list[Block] = []
+        element.dump_only = True
+        element.emit = made.append
+        try:
+            rapid = RapidTraverse(element.state, element.output, element.store_m, element.dwell)
+            steps = tuple(round(d / step) for d in departures[: len(at)])
+            rapid.request()
+            rapid.motion(sum((s * step) ** 2 for s in steps) ** 0.5)
+            move = Block.motion(
+                Code.LINEAR,
+                record if record is not None else 0,
+                steps,
+                tuple(a + s for a, s in zip(at, steps, strict=True)),
+                step,
+            )
+            move.rapid = True
+            element.output(move)
+            moved = len(made)
+            rapid.leave()
+            element.flush_m(record)
+        finally:
+            element.dump_only = False
+        for block in made:
+            block.head = self.head
+        return made[: moved - 1], made[moved - 1], made[moved:]
 
     def refeed(self, block: Block, code: float) -> None:
         """A linear move under another dimension G code (one G register for both heads):
@@ -107,7 +143,7 @@ class GMOUT:
         self.sinks = sinks
         self.warn = warn
         self.heads = (HeadConverter(machine, 1), HeadConverter(machine, 2))
-        self.preferred = 2
+        self.preferred = 1  # PRFSEQ's head; head 1 until one is named
         self.one_g_register = machine.number_option(152) == 0
         self.one_f_register = machine.number_option(139) == 0
         self.pairs = MODE_PAIRS.get(int(machine.number_option(156)), MODE_PAIRS[0])
@@ -117,46 +153,60 @@ class GMOUT:
             for cell in SHARABLE_CELLS
             if cell < len(first) and first[cell] and first[cell] == second[cell]
         )
+        self.circular_head: int | None = None  # PREPHD's code in effect (TABLEG 16 or 17)
         self.cut_minutes = 0.0
         self.dwell_minutes = 0.0
         self.summed: list[float] | None = None  # each head's time in a combined section
         self.tolerances: tuple[float, float] | None = None  # OP's RPM/SFM and IPM bands
+        self.by_rpm = True
+        # SAFHD1/SAFHD2, SFMHD1/SFMHD2, each head's RPM and last point (steps), parked
+        self.safety: dict[int, tuple[float, ...] | None] = {1: None, 2: None}
+        self.sfm: dict[int, float | None] = {1: None, 2: None}
+        self.rpm: dict[int, float | None] = {1: None, 2: None}
+        self.positions: dict[int, tuple[int, ...] | None] = {1: None, 2: None}
+        self.parked = {1: False, 2: False}
 
     # -- sections ---------------------------------------------------------------------
 
     def start_section(self, first_op: Block, second_op: Block) -> None:
-        """The heads' OP blocks give the section's restrictions (001 L7626-7645): the
-        tolerance bands in percent, unless either says NONE (DBFSEG(11) = 2)."""
+        """The heads' OP blocks give the section's restrictions (001 L7626-7645): RPM or
+        SFM (DBFSEG(7)) and the tolerance bands in percent, unless either says NONE
+        (DBFSEG(11) = 2); the tighter of the two heads' bands holds."""
         self.summed = [0.0, 0.0]
         self.tolerances = None
         ops = (first_op, second_op)
-        if all(op.cells[11] == 0.0 for op in ops):
-            bands = [op.cells[k] for op in ops for k in (9, 10) if op.cells[k] is not ABSENT]
-            if bands:
-                # the tighter of the two heads' bands holds
-                spindle = min(float(op.cells[9]) for op in ops if op.cells[9] is not ABSENT)
-                feed = min(float(op.cells[10]) for op in ops if op.cells[10] is not ABSENT)
-                self.tolerances = (spindle, feed)
+        given = [op for op in ops if op.cells[11] == 0.0 and op.cells[9] is not ABSENT]
+        if given and all(op.cells[11] != 2.0 for op in ops):
+            spindle = min(_number(op.cells[9]) for op in given)
+            feed = min(_number(op.cells[10]) for op in given)
+            self.by_rpm = all(op.cells[7] == 1.0 for op in given)
+            self.tolerances = (spindle, feed)
 
     def end_section(self) -> None:
         self.summed = None
         self.tolerances = None
 
     def combinable(self, first: Block, second: Block) -> bool:
-        """The control can cut the pair together (option 156) and the pair keeps within
-        the OP tolerance bands; a pair outside them is cut one head after the other, with
-        the diagnostic."""
-        if (_mode(first), _mode(second)) not in self.pairs:
-            return False
+        """The control can cut the pair together (option 156, 001 L26218-26228)."""
+        return (_mode(first), _mode(second)) in self.pairs
+
+    def restricted(self, first: Block, second: Block) -> bool:
+        """The "three restrictions" (001 L7626-7645): the heads' spindle speeds (RPM, or
+        SFM when the OP says SFM) or feedrates differ by more than the OP's bands, in
+        percent of the larger. True, with the diagnostic, when the heads may not cut
+        together."""
         if self.tolerances is None:
-            return True
+            return False
         spindle, feed = self.tolerances
-        for cell, band, what in ((20, spindle, "SPINDLE SPEEDS"), (19, feed, "FEEDRATES")):
-            a, b = first.cells[cell], second.cells[cell]
-            if a is ABSENT or b is ABSENT:
+        speeds = self.rpm if self.by_rpm else self.sfm
+        pairs = (
+            (speeds[1], speeds[2], spindle, "SPINDLE SPEEDS" if self.by_rpm else "SFM VALUES"),
+            (_number(first.cells[19]), _number(second.cells[19]), feed, "FEEDRATES"),
+        )
+        for a, b, band, what in pairs:
+            if a is None or b is None or max(a, b) <= 0:
                 continue
-            a, b = float(a), float(b)
-            if max(a, b) > 0 and abs(a - b) / max(a, b) * 100.0 > band:
+            if abs(a - b) / max(a, b) * 100.0 > band:
                 self.warn(
                     Diagnostic(
                         f"HEADS NOT CUT TOGETHER: THEIR {what} DIFFER BY MORE THAN THE "
@@ -164,14 +214,79 @@ class GMOUT:
                         None,
                     )
                 )
-                return False
-        return True
+                return True
+        return False
+
+    def information(self, block: Block) -> None:
+        """SAFETY (DBFSEG(11) = 1) and SFM (= 4) information blocks: SAFHD1/SAFHD2 and
+        SFMHD1/SFMHD2 (001 L7336-7346)."""
+        head = block.head or 1
+        if block.cells[11] == 1.0:
+            self.safety[head] = tuple(_number(block.cells[k]) for k in (3, 4, 5))
+        else:
+            self.sfm[head] = _number(block.cells[3])
+
+    # -- parking (FXPARK: PARK, RETHD, 001 L31834-31915, L7971-7992) ----------------
+
+    def park(self, head: int, record: int | None) -> None:
+        """Withdraw ``head`` from the work by its SAFETY departures at rapid, the other
+        head withdrawn with it and brought back (so neither mars the work), and the
+        comment; a head with no SAFETY stays where it is, with a diagnostic."""
+        departures = self.safety[head]
+        if departures is None or self.positions[head] is None:
+            self.warn(Diagnostic(f"HEAD {head} NOT PARKED: NO SAFETY WAS GIVEN FOR IT", None))
+            return
+        other = 3 - head
+        self.parked[head] = True
+        self.text(f"HEAD {head} PARKED", record)
+        withdrawn = self.safety[other]
+        if withdrawn is None or self.positions[other] is None:
+            self._rapid(head, departures, record)
+            return
+        moves = {head: departures, other: withdrawn}
+        blocks = [self._rapid_blocks(h, moves[h], record) for h in (1, 2)]
+        for before, _, _ in blocks:
+            for block in before:
+                self.alone(block)
+        self.combined(blocks[0][1], blocks[1][1])
+        for _, _, after in blocks:
+            for block in after:
+                self.alone(block)
+        self._rapid(other, tuple(-d for d in withdrawn), record)
+
+    def unpark(self, head: int, record: int | None) -> None:
+        """RETHD: the parked head back to where it was withdrawn from, with the comment."""
+        departures = self.safety[head]
+        if not self.parked[head] or departures is None:
+            return
+        self.parked[head] = False
+        self.text(f"HEAD {head} RETURNED TO THE WORK", record)
+        self._rapid(head, tuple(-d for d in departures), record)
+
+    def _rapid(self, head: int, departures: tuple[float, ...], record: int | None) -> None:
+        before, move, after = self._rapid_blocks(head, departures, record)
+        for block in (*before, move, *after):
+            self.alone(block)
+
+    def _rapid_blocks(
+        self, head: int, departures: tuple[float, ...], record: int | None
+    ) -> tuple[list[Block], Block, list[Block]]:
+        at = self.positions[head]
+        assert at is not None
+        return self.heads[head - 1].rapid_move(departures, at, record)
+
+    def text(self, text: str, record: int | None) -> None:
+        """A postprocessor comment (CODE +9) in the listing."""
+        self.warn(Diagnostic(text, None))
+        self.sinks.emit(Block(Code.COMMENT, record, text))
 
     # -- output -----------------------------------------------------------------------
 
     def alone(self, block: Block) -> None:
         """GMOUT(IH = 1 or 2): a head's block by itself."""
         head = block.head or 1
+        if block.code in CIRCLE_CODES:
+            self._prephd(head, block.record)
         self._account(block, head)
         self.heads[head - 1].convert(block)
         self._emit(block)
@@ -183,6 +298,7 @@ class GMOUT:
         circle_first, circle_second = (b.code in CIRCLE_CODES for b in (first, second))
         if circle_first != circle_second:
             primary = 1 if circle_first else 2  # the sign points at the circular head
+            self._prephd(primary, first.record)
         if self.one_g_register:
             self._one_g(first, second)
         for cell in self.shared:
@@ -208,7 +324,7 @@ class GMOUT:
         separator = self.heads[0].element.separator
         parts = [p for p in (first.punch, second.punch) if p]
         block.punch = separator.join(parts)
-        self.sinks.emit(block)
+        self._emit(block)
 
     def finish(self, finis: list[Block | None]) -> None:
         """One FINI closes the merged output (the tapes each had theirs)."""
@@ -221,7 +337,31 @@ class GMOUT:
     def _emit(self, block: Block) -> None:
         if block.code in (Code.INFORMATION, Code.RESET):
             return
+        for part in block.halves or (block,):
+            head = part.head or 1
+            if part.cells[20] is not ABSENT:
+                self.rpm[head] = _number(part.cells[20])
+            if part.position is not None:
+                self.positions[head] = part.position
         self.sinks.emit(block)
+
+    def _prephd(self, head: int, record: int | None) -> None:
+        """PREPHD (001 L34994-35040, L8664-8669): the G code that lets this head cut the
+        circle, TABLEG(16) for head 1, (17) for head 2, in a block by itself; modal, so
+        only when the other is in effect (or none yet). A machine without them has none."""
+        if self.circular_head == head:
+            return
+        code = self.machine.g_code(15 + head)
+        if code is None:
+            return
+        self.circular_head = head
+        block = Block(Code.G_ONLY, record)
+        block.cells[1] = ABSENT if record is None else float(record)  # SEQCTR, as OUTPUT
+        block.cells[2] = code
+        block.cells[15] = float(int(Code.G_ONLY))
+        block.head = 1
+        self.heads[0].convert(block)
+        self._emit(block)
 
     def _one_g(self, first: Block, second: Block) -> None:
         circles = [b for b in (first, second) if b.code in CIRCLE_CODES]
@@ -249,11 +389,11 @@ class GMOUT:
         from gecent.core.multihead.split import linear_head_offsets
 
         step = self.heads[0].element.step
-        chord = tuple(s * step for s in (circle.steps or (0, 0, 0)))
+        chord = _three(s * step for s in (circle.steps or ()))
         offsets = tuple(0.0 if v is ABSENT else float(v) for v in circle.cells[8:11])
         if not any(offsets) and circle.radius is not None:
             offsets = (circle.radius, 0.0, 0.0)
-        departures = tuple(s * step for s in (line.steps or (0, 0, 0)))
+        departures = _three(s * step for s in (line.steps or ()))
         for axis, value in enumerate(linear_head_offsets(chord, offsets, departures)):
             line.cells[8 + axis] = abs(value) if hypot(*departures) else ABSENT
         line.cells[2] = ABSENT
@@ -307,3 +447,13 @@ class GMOUT:
         block.dwell_minutes = max(0.0, block.dwell_minutes - over)
         self.cut_minutes += block.cut_minutes
         self.dwell_minutes += block.dwell_minutes
+
+
+def _three(values: Iterable[float]) -> tuple[float, float, float]:
+    """Departures as three axes (a two-axis machine's blocks have two)."""
+    x, y, z = (*values, 0.0, 0.0, 0.0)[:3]
+    return (x, y, z)
+
+
+def _number(value: float | Absent) -> float:
+    return 0.0 if value is ABSENT else float(value)

@@ -15,11 +15,18 @@ from __future__ import annotations
 import json
 import os
 from abc import ABC, abstractmethod
+from collections.abc import Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import IO, Protocol
 
-from gecent.core.errors import GecentError, NotYetSupported, SourcePosition
+from gecent.core.errors import (
+    Diagnostic,
+    GecentError,
+    InputError,
+    NotYetSupported,
+    SourcePosition,
+)
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.output.block import Block
 from gecent.core.output.files import AtomicFile
@@ -51,11 +58,27 @@ class Sink(Protocol):
 
 class ListingWriter(Protocol):
     """A printout's page maker (GEOUT1-4): text for each block as pages fill, the rest at
-    the end."""
+    the end, in pieces (a printout kept in temporary files comes back page by page)."""
 
     def block(self, block: Block, line: str | None) -> str: ...
 
-    def finish(self) -> str: ...
+    def finish(self) -> Iterator[str]: ...
+
+    def discard(self) -> None:
+        """Drop what the pages hold outside memory (temporary files), printing nothing;
+        ``finish`` does it too, and both may be called more than once."""
+
+
+class PrintoutUnfit(NotYetSupported):
+    """A printout that cannot lay out the machine's line: GEOUT1 whose line does not fit
+    the option-160 print positions (001 L9452-9476). The listing is made by printout
+    ``instead`` (GEOUT2), after the warning ``comment``; called directly (a script), it is
+    the error it says."""
+
+    def __init__(self, feature: str, comment: str, instead: int) -> None:
+        super().__init__(feature)
+        self.comment = comment
+        self.instead = instead
 
 
 class LineSink(ABC):
@@ -117,16 +140,26 @@ class ListingSink:
 
     def close(self, ending: Ending) -> None:
         if not ending.ok and ending.dump is None:
+            self.writer.discard()
             self.file.discard()  # bad input: no listing either
             return
         try:
-            text = self.writer.finish()
-        except GecentError:
-            text = ""  # the printout itself cannot be finished: the dump alone
+            for text in _finished(self.writer):
+                self.file.write(text.encode("utf-8"))
+        finally:
+            self.writer.discard()
         if ending.dump is not None:
-            text += "\n".join(ending.dump) + "\n"
-        self.file.write(text.encode("utf-8"))
+            self.file.write(("\n".join(ending.dump) + "\n").encode("utf-8"))
         self.file.commit()
+
+
+def _finished(writer: ListingWriter) -> Iterator[str]:
+    """The rest of the listing; a printout that cannot be finished gives what it gave
+    (the dump follows it)."""
+    try:
+        yield from writer.finish()
+    except GecentError:
+        return
 
 
 class JsonSink:
@@ -187,6 +220,9 @@ class Sinks:
         self.sinks: list[Sink] = []
         self.line_sinks: list[LineSink] = []  # all of them when the fast path needs no Block
         self.partno = ""  # the first PARTNO's text: the listing's page heading
+        # warnings the outputs make before the run (a printout replaced): the run gives
+        # them as it gives its own, in the listing and on stderr
+        self.notes: list[Diagnostic] = []
         # the characters the punch can carry (None: no punch; the tape image is ASCII)
         self.punch_characters: frozenset[str] | None = None
         self.closed = False
@@ -245,7 +281,7 @@ def output_sinks(
     asked; what can be refused (the printout, the tape code) is looked at before any file
     is opened, and a failure on the way closes what was opened."""
     sinks = Sinks()
-    writer = None
+    writer: ListingWriter | None = None
     if listing is not None:
         layout = int(machine.number_option(164))
         printout = plugins.get("printouts", layout)
@@ -253,8 +289,17 @@ def output_sinks(
         if printout is None:
             raise NotYetSupported(f"printout GEOUT{layout} (option 164 = {layout})", where)
         try:
-            writer = printout.listing(machine, lambda: sinks.partno)
-        except NotYetSupported as exc:
+            try:
+                writer = printout.listing(machine, lambda: sinks.partno)
+            except PrintoutUnfit as unfit:  # GEOUT1 cannot be used: GEOUT2, with a warning
+                instead = plugins.get("printouts", unfit.instead)
+                if instead is None:
+                    raise NotYetSupported(
+                        f"printout GEOUT{unfit.instead} ({unfit.feature})", where
+                    ) from None
+                writer = instead.listing(machine, lambda: sinks.partno)
+                sinks.notes.append(Diagnostic(unfit.comment, where))
+        except (NotYetSupported, InputError) as exc:
             exc.where = exc.where or where
             raise
     puncher = (
@@ -279,5 +324,7 @@ def output_sinks(
             sinks.add(JsonSink(json_stream, machine))
     except BaseException:
         sinks.close(Ending(False))
+        if writer is not None:
+            writer.discard()  # (when its sink was never made)
         raise
     return sinks

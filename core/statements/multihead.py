@@ -13,7 +13,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from gecent.core.cl.records import Statement, Word
-from gecent.core.errors import InputError
+from gecent.core.errors import InputError, NotYetSupported
 from gecent.core.output.block import Block, Code
 
 if TYPE_CHECKING:
@@ -108,4 +108,27 @@ def prfseq(run: Post, statement: Statement) -> None:
     run.output.emit(block)
 
 
-HANDLERS = {"COMBIN": combin, "OP": op, "PRFSEQ": prfseq}
+def safety(run: Post, statement: Statement) -> None:
+    """SAFETY/dx,dy,dz on a multihead machine (SAFEGM, 001 L36514-36545; SAFHD1/SAFHD2,
+    L7341-7346): the departures that withdraw this head from the work when it is parked,
+    in a CODE 17 information block (DBFSEG(11) = 1). The single-head SAFETY (FACE, TURN,
+    BORE, the R register) is not built."""
+    if run.state.head == 0:
+        raise NotYetSupported("SAFETY statement", statement.where)
+    args = statement.args
+    if len(args) != 3 or any(isinstance(a, Word) for a in args):
+        raise InputError(
+            "SAFETY on a multihead program expects the head's withdrawal departures dx, dy, dz",
+            statement.where,
+        )
+    block = Block(Code.MULTIHEAD_1, statement.number)
+    block.cells[2] = float(run.state.multihead_op)
+    for axis, value in enumerate(args):
+        block.cells[3 + axis] = run.units.length(float(value))  # type: ignore[arg-type]
+    block.cells[8] = float(run.state.head)
+    block.cells[11] = float(OP_SAFETY)
+    block.cells[15] = float(Code.MULTIHEAD_1)
+    run.output.emit(block)
+
+
+HANDLERS = {"COMBIN": combin, "OP": op, "PRFSEQ": prfseq, "SAFETY": safety}

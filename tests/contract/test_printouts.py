@@ -43,6 +43,6 @@ def test_printout_pages_stream_as_it_renders(info: PluginInfo) -> None:
     blocks += [Block(Code.PPRINT, n, f"NOTE {n}") for n in range(2, 200)]
     pages = info.obj.listing(machine, lambda: "PART 1")
     streamed = "".join(pages.block(block, tape_line(block)) for block in blocks)
-    streamed += pages.finish()
+    streamed += "".join(pages.finish())
     assert streamed == info.obj.render(machine, blocks, "PART 1")
     assert streamed.count("PAGE ") > 1

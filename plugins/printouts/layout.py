@@ -1,0 +1,265 @@
+"""What the printouts GEOUT1-GEOUT4 share (manual §3.5.2-3.5.3, 001 L8856-9188): columns
+laid out from the register tables over the option-160 print positions, the register title
+centred over them, the absolute values widened to 4 integer digits (001 L8936-8965), the
+bookkeeping of every block (tape frames, cut and dwell times, the ORIGIN) and the pages:
+banner, machine title and page number, PARTNO, register title, option 79 lines, the times
+accumulated to the page at its bottom and the tape footage on the last page.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass
+from math import ceil
+from typing import TYPE_CHECKING, Any
+
+from gecent.core.errors import InputError, SourcePosition
+from gecent.core.machine.definition import MachineDefinition, RegisterSet
+from gecent.core.machine.shuffle import cell_map
+from gecent.core.output.block import Block, Code
+from gecent.core.output.element import MOTION_CODES, POSITION_CODES, THREAD_CODES
+from gecent.core.output.format import NO_DECIMAL_POINT
+from gecent.core.output.marks import stand_in
+from gecent.core.output.tape import frames_to_feet, line_frames
+
+if TYPE_CHECKING:
+    import jinja2
+
+FIRST_COLUMN = 3  # column 2 holds the OPSKIP "/" (001 L16394-16397)
+# Column 1 is the FORTRAN carriage-control character, not a print position: a line of
+# option 160 print positions is option 160 + 1 characters long (docs/decisions.md).
+CARRIAGE_CONTROL = 1
+GAP = 1  # the least space between two fields; the spare positions are added equally
+NOT_REGISTERS = frozenset({15, 19, 20})  # CODE, feed in IPM, speed in RPM
+# the axes whose absolute values are printed: X, Y, Z, the rotary A and B, and C
+AXIS_CELLS = (3, 4, 5, 6, 7, 18)
+ROTARY_CELLS = frozenset({6, 7})
+ABSOLUTE_DIGITS = 4  # the absolute columns hold 4 integer digits (001 L8936-8965)
+FEED_WIDTH = 9  # F-IPM: 3 decimals, trailing zeros dropped (NPR(25) = -103)
+SPEED_WIDTH = 7  # S-RPM
+RECORD_WIDTH = 5  # a CL record number
+
+# the numeric blocks the printouts lay out in columns (text blocks print their text)
+PRINTABLE = (
+    MOTION_CODES
+    | THREAD_CODES
+    | POSITION_CODES
+    | {
+        Code.FROM,
+        Code.ROTARY_INCREMENTAL,
+        Code.NONMOTION,
+        Code.AUX_ONLY,
+        Code.DWELL,
+        Code.G_ONLY,
+        Code.END,
+        Code.TMARK,
+        Code.CYCLE,
+    }
+)
+
+
+@dataclass(frozen=True, slots=True)
+class Column:
+    key: str  # a register location ("3"), "ABS-3", "F-IPM", "S-RPM" or "CLREC"
+    heading: str
+    width: int
+    start: int = 0
+
+    @property
+    def end(self) -> int:
+        """The string index after the field's last character (index 0 is column 1)."""
+        return self.start - 1 + self.width
+
+
+def format_width(registers: RegisterSet, location: int) -> int:
+    """A register's printed width: its sign, digits and decimal point."""
+    fmt = registers.formats[location]
+    assert fmt is not None
+    point = 1 if fmt.right and location not in NO_DECIMAL_POINT else 0
+    return (1 if fmt.signed else 0) + fmt.left + point + fmt.right
+
+
+def absolute_width(registers: RegisterSet, location: int) -> int:
+    """An axis widened for its absolute values: sign, 4 integer digits, point, decimals."""
+    fmt = registers.formats[location]
+    assert fmt is not None
+    return 2 + ABSOLUTE_DIGITS + fmt.right
+
+
+def needed(wanted: Sequence[Column], first: int = FIRST_COLUMN) -> int:
+    """The print positions a line of these fields takes, from column 2, at least one blank
+    apart, the first at column ``first``."""
+    widths = [max(c.width, len(c.heading)) for c in wanted]
+    return first - 1 - CARRIAGE_CONTROL + sum(widths) + GAP * (len(widths) - 1)
+
+
+def spread(wanted: Sequence[Column], limit: int, first: int = FIRST_COLUMN) -> list[Column]:
+    """The fields placed from column ``first``, each as wide as its format or its heading,
+    the spare positions of the ``limit`` shared out equally between them (001
+    L9543-9546). The caller has made sure they fit."""
+    gap = GAP + (limit - needed(wanted, first)) // max(1, len(wanted) - 1)
+    placed: list[Column] = []
+    at = first
+    for column in wanted:
+        width = max(column.width, len(column.heading))
+        placed.append(Column(column.key, column.heading, width, at))
+        at += width + gap
+    return placed
+
+
+def centred_heading(columns: Sequence[Column]) -> str:
+    """Each title centred over its field, as SETLIN places it at (NIP + NFP) / 2
+    (001 L9548-9568)."""
+    line = ""
+    for column in columns:
+        centre = column.start + (column.width - 1) // 2
+        first = centre - (len(column.heading) - 1) // 2
+        line = line.ljust(first - 1) + column.heading
+    return line.rstrip()
+
+
+def absolute_text(value: float, decimals: int) -> str:
+    """GEOUT1's absolute value: signed, no leading zeros."""
+    return f"{round(value, decimals) + 0.0:+.{decimals}f}"  # + 0.0: no "-0.0000"
+
+
+def expanded_text(value: float, decimals: int) -> str:
+    """An absolute value in its widened format, 4 integer digits with their leading zeros,
+    as W9 prints them (0892.3456, 1088.1366; 001 L8945-8960), with its sign."""
+    width = 2 + ABSOLUTE_DIGITS + decimals
+    return f"{round(value, decimals) + 0.0:+0{width}.{decimals}f}"
+
+
+def feed_text(ipm: float) -> str:
+    return f"{ipm:.3f}".rstrip("0")
+
+
+def speed_text(rpm: float) -> str:
+    return f"{rpm:.1f}".rstrip("0")
+
+
+def axis_sources(machine: MachineDefinition) -> dict[int, tuple[int, int]]:
+    """The register cell each internal axis (CL x, y, z) is printed under, with its sign:
+    option 59 as SHUFFL applies it (001 L9019-9082)."""
+    return {
+        target[0]: (internal, target[1])
+        for internal, target in enumerate(cell_map(machine.number_option(59), "XYZ"))
+        if target is not None
+    }
+
+
+def machine_title(machine: MachineDefinition) -> str:
+    """The page's machine title (TAG)."""
+    return machine.title or (f"MACHINE {machine.number}" if machine.number else "STANDARD MACHINE")
+
+
+def lines_per_page(machine: MachineDefinition) -> int:
+    return max(1, int(machine.number_option(79)))
+
+
+def does_not_fit(machine: MachineDefinition, name: str, wanted: int) -> InputError:
+    limit = int(machine.number_option(160))
+    return InputError(
+        f"the {name} printout's line needs {wanted} print positions, option 160 gives {limit}",
+        SourcePosition(machine.origin),
+    )
+
+
+class Tally:
+    """What a printout counts as the blocks come, printed or not: the tape's frames (for
+    the footage), the cut and dwell minutes (CUTIME, DWTIME) and the ORIGIN of the
+    operator data (an information block with cells[2] = 2, never punched)."""
+
+    def __init__(self, machine: MachineDefinition) -> None:
+        self.leader = stand_in(machine, 64)
+        self.frames = 0
+        self.cut = self.dwell = 0.0
+        self.origin = (0.0, 0.0, 0.0)
+
+    def count(self, block: Block, line: str | None) -> None:
+        if line is not None:
+            self.frames += line_frames(line, self.leader)
+        if block.code is Code.INFORMATION and block.cells[2] == 2.0:
+            x, y, z = (block.cells[k] for k in (3, 4, 5))
+            self.origin = (float(x), float(y), float(z))  # type: ignore[arg-type]
+        self.cut += block.cut_minutes
+        self.dwell += block.dwell_minutes
+
+    @property
+    def tape_feet(self) -> int:
+        return ceil(frames_to_feet(self.frames) - 1e-9)
+
+
+class Pages:
+    """One printout's pages as its lines come. A page holds ``per_page`` lines and ends
+    with the cut and dwell times accumulated to its last line; the last page ends with the
+    run's times and the tape footage (001 L9447-9449; sample footer L10557-10558). A full
+    page is held until the next line comes, since only then is it known not to be the
+    last. The lines of one block are kept on one page when they fit on a page at all.
+
+    ``frame`` gives the rest of the template's values when a page is printed (the PARTNO
+    known then, the tape footage); ``opening``: the first page opens the listing (no form
+    feed before it)."""
+
+    def __init__(
+        self,
+        template: jinja2.Template,
+        per_page: int,
+        frame: Callable[[], dict[str, Any]],
+        opening: bool = True,
+    ) -> None:
+        self.template = template
+        self.per_page = per_page
+        self.frame = frame
+        self.opening = opening
+        self.lines: list[str] = []
+        self.full: tuple[list[str], float, float] | None = None  # a full page, held
+        self.times = (0.0, 0.0)  # the times to the last line of the page being filled
+        self.pages = 0
+
+    def add_line(self, line: str, cut: float, dwell: float) -> str:
+        """One line; ``cut`` and ``dwell`` are the times to it. Returns the pages it
+        completes (a held full page)."""
+        text = ""
+        if self.full is not None:
+            text = self._page(*self.full, last=False)
+            self.full = None
+        self.lines.append(line)
+        self.times = (cut, dwell)
+        if len(self.lines) == self.per_page:
+            self.full = (self.lines, cut, dwell)
+            self.lines = []
+        return text
+
+    def add(self, lines: Sequence[str], cut: float, dwell: float) -> str:
+        """A block's lines, on a new page if the one being filled cannot take them all."""
+        text = ""
+        if self.lines and len(self.lines) + len(lines) > self.per_page:
+            text = self._page(self.lines, *self.times, last=False)
+            self.lines = []
+        for line in lines:
+            text += self.add_line(line, cut, dwell)
+        return text
+
+    def finish(self, cut: float, dwell: float) -> str:
+        """The last page (and a page held before it), with the run's times."""
+        if self.lines or (self.pages == 0 and self.full is None):
+            text = "" if self.full is None else self._page(*self.full, last=False)
+            self.full = None
+            return text + self._page(self.lines, cut, dwell, last=True)
+        assert self.full is not None
+        lines, _, _ = self.full
+        self.full = None
+        return self._page(lines, cut, dwell, last=True)
+
+    def _page(self, lines: list[str], cut: float, dwell: float, last: bool) -> str:
+        self.pages += 1
+        return self.template.render(
+            first=self.opening and self.pages == 1,
+            last=last,
+            number=self.pages,
+            body="".join(f"{line}\n" for line in lines),  # the lines, joined here: one value
+            cut=cut,
+            dwell=dwell,
+            **self.frame(),
+        )
