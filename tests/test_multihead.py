@@ -10,6 +10,7 @@ import tempfile
 from pathlib import Path
 
 import pytest
+from gecent.core.absent import ABSENT
 from gecent.core.cl.records import Comment
 from gecent.core.dispatch.post import post
 from gecent.core.errors import InputError, NotYetSupported
@@ -257,3 +258,39 @@ def test_safety_on_a_single_head_program_is_not_built(plugins: PluginSet, tmp_pa
     program.write_text("PARTNO P\nMACHIN/GECENT,23\nSAFETY/0.5,0,0\nFINI\n")
     with pytest.raises(NotYetSupported, match="SAFETY statement"):
         post(str(program), plugins)
+
+
+W18 = DATA / "multihead" / "w18.apt"
+
+
+def test_w18_code_signs_follow_the_primary_head(plugins: PluginSet, tmp_path: Path) -> None:
+    """Spec 04 W18 (001 L8413-8424, L8726-8733, L8781-8790): one F register; head 2 has
+    priority (PRFSEQ/ON on head 2), so a line-line pair is CODE -17 with head 2's feed
+    command in the block's F; a linear head 1 with a circular head 2 is -17 too (the sign
+    points at the circular head), after PREPHD's TABLEG(17) = G15, and head 1 carries the
+    "arc-centre offsets" under the one G register, the circle's G31."""
+    program = tmp_path / "w18.apt"
+    program.write_text(W18.read_text().replace("OPTAB,139,0", "OPTAB,139,0,OPTAB,156,3"))
+    result = post(str(program), plugins)
+    combined = [b for b in result.blocks if b.halves is not None]
+    assert [int(b.code) for b in combined] == [-17, -17, -17, -17]
+    assert tape_line(combined[0]) == "N012G01X-001F0100U-001"
+    lines = [tape_line(b) for b in result.blocks]
+    g15 = lines.index("N021G15")
+    circle = result.blocks[g15 + 1]
+    assert circle.halves is not None and circle.halves[1].code is Code.CIRCLE_XY_CCLW
+    words = dict(circle.halves[0].words)
+    assert 10 in words  # head 1's K
+    # the one G register's code sits in head 1's cell (GMHBUF(2)), head 2's is empty
+    assert circle.halves[0].cells[2] == 31.0 and circle.halves[1].cells[2] is ABSENT
+    assert tape_line(circle).startswith("N021G31Z-0005K")
+
+
+def test_w18_a_pair_the_control_cannot_cut_together_is_not_split(plugins: PluginSet) -> None:
+    """Option 156 = 1 (MACH51): circle on head 1 with a line on head 2 only; head 2's
+    circle goes out alone, whole, after PREPHD's G15, while head 1's lines wait their turn."""
+    result = post(str(W18), plugins)
+    circles = [b for b in result.blocks if b.code is Code.CIRCLE_XY_CCLW]
+    assert len(circles) == 1 and circles[0].head == 2
+    assert tape_line(circles[0]) == "G31U+0005W-0005H0005E0020"
+    assert result.cut_minutes == pytest.approx(0.1 + 0.05 + 0.05 + 0.25 * 3.14159265 / 10 + 0.05)

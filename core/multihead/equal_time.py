@@ -42,6 +42,10 @@ def merge_equal_times(
     heads = [
         _HeadMoves(converter, blocks) for converter, blocks in zip(out.heads, moves, strict=True)
     ]
+    # one feedrate register: the control runs a block at a time, so a head's block alone
+    # keeps the other waiting; each head's own time decides which goes on alone
+    out.summed = None
+    behind = [0.0, 0.0]
     one, two = heads[0].moves(), heads[1].moves()
     move_1, move_2 = next(one, None), next(two, None)
     while move_1 is not None and move_2 is not None:
@@ -49,6 +53,14 @@ def merge_equal_times(
             return [heads[0].block(move_1), heads[1].block(move_2)]
         if move_1.time == 0.0 or move_2.time == 0.0:
             index = 0 if move_1.time == 0.0 else 1
+        elif not out.combinable(_source(move_1), _source(move_2)):
+            # a pair the control cannot cut together (option 156) is not split: the head
+            # behind in time goes on alone, as with two feedrate registers
+            index = 0 if behind[0] <= behind[1] else 1
+        else:
+            index = -1
+        if index >= 0:
+            behind[index] += (move_1 if index == 0 else move_2).time
             _out(out, heads[index].block(move_1 if index == 0 else move_2), None)
             if index == 0:
                 move_1 = next(one, None)
@@ -56,6 +68,8 @@ def merge_equal_times(
                 move_2 = next(two, None)
             continue
         step = equal_time_step(move_1.time, move_2.time, tmax, band)
+        behind[0] += step.time
+        behind[1] += step.time
         if step.rule is MergeRule.SPLIT and step.head == 1:
             piece, move_1 = split_move(move_1, step.fraction)
             _out(out, heads[0].block(piece), heads[1].block(move_2))
