@@ -202,12 +202,71 @@ def test_prephd_enables_the_circle_on_its_head(plugins: PluginSet, tmp_path: Pat
     assert after.halves is not None and after.halves[0].code is Code.CIRCLE_XY_CCLW
 
 
-def test_a_common_axis_is_refused_by_name(plugins: PluginSet, tmp_path: Path) -> None:
+GANTRY = DATA / "multihead" / "gantry.apt"
+
+
+def test_w6_common_axis_segments_at_the_other_heads_end(plugins: PluginSet) -> None:
+    """Spec 04 W6 (Diagram 3.4.8.2.1.3.2A, 001 L8185-8402): X common to both heads, one
+    feedrate register. Pair 1 (0->10 and 0->10) combines as it is; pair 2 (10->20 and
+    10->25): head 2 goes further and is segmented at 20, the pieces combine; head 1 then
+    reads its STOP, is parked (head 2 withdrawn with it and brought back), and head 2's
+    remnant 20->25 goes out alone."""
+    result = post(str(GANTRY), plugins)
+    lines = [tape_line(b) for b in result.blocks if b.code is not Code.PARTNO]
+    lines = [line for line in lines if line is not None]
+    assert lines[:2] == ["N014G10X+010F0100U+010", "N015G10X+010F0100U+010"]
+    assert lines[-1] == "G01U+005E0020"  # the remnant, 5 in at 10 IPM
+    texts = [b.text for b in result.blocks if b.code is Code.COMMENT]
+    assert texts == ["HEAD 1 PARKED"]
+    heads = _head_blocks(result.blocks)
+    assert heads[2][-1].position is not None and heads[2][-1].position[0] == 250000
+    _gantry_holds(result.blocks, {1: [0, 10000], 2: [0, 20000]})
+
+
+def test_a_head_the_common_axis_moved_returns_to_its_point(
+    plugins: PluginSet, tmp_path: Path
+) -> None:
+    """Head 1 cuts along X alone (unequal operation numbers) while head 2 is parked; the
+    axis takes head 2 along, so before head 2 cuts it returns to its own point: the X of
+    its own last CL point (001 L7986-7990)."""
     program = tmp_path / "p.apt"
     program.write_text(
-        SEQUENCING.read_text().replace("MACHIN/GECENT,51", "MACHIN/GECENT,51,OPTAB,155,1")
+        GANTRY.read_text()
+        .replace("OP/1\nGOTO/10,1,0", "OP/1\nGOTO/5,1,0\nOP/2\nGOTO/10,1,0", 1)
+        .replace("OP/1\nGOTO/10,2,0", "OP/3\nGOTO/10,2,0", 1)
     )
-    with pytest.raises(NotYetSupported, match="common axis of the heads"):
+    result = post(str(program), plugins)
+    texts = [b.text for b in result.blocks if b.code is Code.COMMENT]
+    # head 2 parked while head 1 cuts alone; head 1 parked before head 2 comes back
+    assert texts == ["HEAD 2 PARKED", "HEAD 1 PARKED", "HEAD 2 RETURNED TO THE WORK"]
+    returned = [b for b in result.blocks if b.head == 2 and b.rapid]
+    assert tape_line(returned[-1]) == "G10U-020W-0005E0500"  # X back from 20 to 0, out of SAFETY
+    _gantry_holds(result.blocks, {1: [0, 10000], 2: [0, 20000]})
+
+
+def _gantry_holds(blocks: list[Block], at: dict[int, list[int]]) -> None:
+    """Each block's departures take its head from where it stands to the point the block
+    says, where a head stands moving with the other's moves along X (the common axis),
+    and a combined block moves both heads alike along it."""
+    for block in blocks:
+        parts = [p for p in block.halves or (block,) if p.steps and p.code is not Code.FROM]
+        if block.halves is not None:
+            assert {p.steps[0] for p in parts if p.steps} != set() and len(
+                {p.steps[0] for p in parts if p.steps}
+            ) == 1
+        for part in parts:
+            assert part.steps is not None and part.position is not None
+            mine = at[part.head]
+            mine[:] = [a + s for a, s in zip(mine, part.steps[:2], strict=True)]
+            assert tuple(mine) == part.position[:2]
+            if block.halves is None:  # (a combined block moves both heads itself)
+                at[3 - part.head][0] = mine[0]
+
+
+def test_safety_along_the_common_axis_is_refused(plugins: PluginSet, tmp_path: Path) -> None:
+    program = tmp_path / "p.apt"
+    program.write_text(GANTRY.read_text().replace("SAFETY/0,0.5,0", "SAFETY/0.5,0,0", 1))
+    with pytest.raises(InputError, match="along the heads' common axis"):
         post(str(program), plugins)
 
 

@@ -40,7 +40,7 @@ def merge_equal_times(
     tmax = tape_reader_limit(machine.number_option(13), machine.number_option(69))
     band = machine.number_option(151)
     heads = [
-        _HeadMoves(converter, blocks) for converter, blocks in zip(out.heads, moves, strict=True)
+        HeadMoves(converter, blocks) for converter, blocks in zip(out.heads, moves, strict=True)
     ]
     # one feedrate register: the control runs a block at a time, so a head's block alone
     # keeps the other waiting; each head's own time decides which goes on alone
@@ -109,7 +109,7 @@ def _out(out: GMOUT, first: Block | None, second: Block | None) -> None:
             out.alone(block)
 
 
-class _HeadMoves:
+class HeadMoves:
     """One head's blocks as moves, and the pieces the merge makes of them as blocks."""
 
     def __init__(self, converter: HeadConverter, blocks: Iterator[Block]) -> None:
@@ -118,6 +118,16 @@ class _HeadMoves:
         self.step = converter.element.step
         self.source: Block | None = None
         self.remaining: list[int] = []  # steps of the source not yet output
+
+    def start(self, move: Move, axis: int) -> float:
+        """Where ``move`` starts on a CL axis (inches): a split's rest where the pieces
+        already output end, a whole move where its block ends less its departure."""
+        source = _source(move)
+        assert source.position is not None and source.steps is not None
+        left = self.remaining if source is self.source else list(source.steps)
+        if axis >= len(left) or axis >= len(source.position):
+            return 0.0
+        return (source.position[axis] - left[axis]) * self.step
 
     def moves(self) -> Iterator[Move]:
         for block in self.blocks:

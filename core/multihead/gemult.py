@@ -20,6 +20,7 @@ from gecent.core.errors import Diagnostic, NotYetSupported
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.multihead.dump import ScratchTape
 from gecent.core.multihead.equal_time import merge_equal_times
+from gecent.core.multihead.gantry import merge_common_axis
 from gecent.core.multihead.gmout import GMOUT, mergeable
 from gecent.core.output.block import Block, Code
 from gecent.core.output.sinks import Sinks
@@ -63,11 +64,10 @@ class MergePass:
         sinks: Sinks,
         warn: Callable[[Diagnostic], None],
     ) -> None:
-        if machine.number_option(155) != 0:
-            raise NotYetSupported(
-                "a common axis of the heads (option 155): FXMULT's segmentation and the "
-                "parking of the heads (manual §3.4.8.2.1.3)"
-            )
+        common = int(machine.number_option(155))
+        if common not in (0, 1, 2, 3):
+            raise NotYetSupported(f"a common axis of the heads given as option 155 = {common}")
+        self.common_axis = common - 1 if common else None
         self.machine = machine
         self.tapes = [HeadTape(tape.head, tape.read()) for tape in tapes]
         self.out = GMOUT(machine, sinks, warn)
@@ -124,7 +124,9 @@ class MergePass:
         for tape in self.tapes:
             tape.waiting_op = None
         moves = [self._moves(tape) for tape in self.tapes]
-        if self.two_feed_registers:
+        if self.common_axis is not None:
+            left = merge_common_axis(self.machine, moves, self.out, self.common_axis)
+        elif self.two_feed_registers:
             left = self._by_summed_times(moves)
         else:
             left = merge_equal_times(self.machine, moves, self.out)
@@ -189,10 +191,10 @@ class MergePass:
         keep = out.preferred
         parked = 3 - keep
         record = next((b.record for b in pending if b is not None), None)
-        out.park(parked, record)
+        out.parking.park(parked, record)
         for head in (keep, parked):
             if head == parked:
-                out.unpark(parked, record)
+                out.parking.unpark(parked, record)
             block = pending[head - 1]
             if block is not None:
                 out.alone(block)

@@ -22,6 +22,7 @@ from gecent.core.errors import Diagnostic
 from gecent.core.feed.rapid import RapidTraverse
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.multihead.heads import head_machine
+from gecent.core.multihead.parking import Parking
 from gecent.core.output.block import TEXT_CODES, Block, Code
 from gecent.core.output.element import CIRCLE_CODES, OutputElement
 from gecent.core.output.sinks import Sinks
@@ -79,6 +80,10 @@ class HeadConverter:
         feed.programmed = ipm
         feed.rapid_ipm = 0.0
         self.element._motion(block)
+
+    @property
+    def step(self) -> float:
+        return self.element.step
 
     def rapid_move(
         self, departures: tuple[float, ...], at: tuple[int, ...], record: int | None
@@ -159,12 +164,11 @@ class GMOUT:
         self.summed: list[float] | None = None  # each head's time in a combined section
         self.tolerances: tuple[float, float] | None = None  # OP's RPM/SFM and IPM bands
         self.by_rpm = True
-        # SAFHD1/SAFHD2, SFMHD1/SFMHD2, each head's RPM and last point (steps), parked
-        self.safety: dict[int, tuple[float, ...] | None] = {1: None, 2: None}
+        # SFMHD1/SFMHD2, each head's RPM and the point it stands at (steps)
         self.sfm: dict[int, float | None] = {1: None, 2: None}
         self.rpm: dict[int, float | None] = {1: None, 2: None}
         self.positions: dict[int, tuple[int, ...] | None] = {1: None, 2: None}
-        self.parked = {1: False, 2: False}
+        self.parking = Parking(self)
 
     # -- sections ---------------------------------------------------------------------
 
@@ -181,6 +185,10 @@ class GMOUT:
             feed = min(_number(op.cells[10]) for op in given)
             self.by_rpm = all(op.cells[7] == 1.0 for op in given)
             self.tolerances = (spindle, feed)
+
+    @property
+    def head_outputs(self) -> tuple[HeadConverter, HeadConverter]:
+        return self.heads
 
     def end_section(self) -> None:
         self.summed = None
@@ -222,58 +230,9 @@ class GMOUT:
         SFMHD1/SFMHD2 (001 L7336-7346)."""
         head = block.head or 1
         if block.cells[11] == 1.0:
-            self.safety[head] = tuple(_number(block.cells[k]) for k in (3, 4, 5))
+            self.parking.safety_given(head, tuple(_number(block.cells[k]) for k in (3, 4, 5)))
         else:
             self.sfm[head] = _number(block.cells[3])
-
-    # -- parking (FXPARK: PARK, RETHD, 001 L31834-31915, L7971-7992) ----------------
-
-    def park(self, head: int, record: int | None) -> None:
-        """Withdraw ``head`` from the work by its SAFETY departures at rapid, the other
-        head withdrawn with it and brought back (so neither mars the work), and the
-        comment; a head with no SAFETY stays where it is, with a diagnostic."""
-        departures = self.safety[head]
-        if departures is None or self.positions[head] is None:
-            self.warn(Diagnostic(f"HEAD {head} NOT PARKED: NO SAFETY WAS GIVEN FOR IT", None))
-            return
-        other = 3 - head
-        self.parked[head] = True
-        self.text(f"HEAD {head} PARKED", record)
-        withdrawn = self.safety[other]
-        if withdrawn is None or self.positions[other] is None:
-            self._rapid(head, departures, record)
-            return
-        moves = {head: departures, other: withdrawn}
-        blocks = [self._rapid_blocks(h, moves[h], record) for h in (1, 2)]
-        for before, _, _ in blocks:
-            for block in before:
-                self.alone(block)
-        self.combined(blocks[0][1], blocks[1][1])
-        for _, _, after in blocks:
-            for block in after:
-                self.alone(block)
-        self._rapid(other, tuple(-d for d in withdrawn), record)
-
-    def unpark(self, head: int, record: int | None) -> None:
-        """RETHD: the parked head back to where it was withdrawn from, with the comment."""
-        departures = self.safety[head]
-        if not self.parked[head] or departures is None:
-            return
-        self.parked[head] = False
-        self.text(f"HEAD {head} RETURNED TO THE WORK", record)
-        self._rapid(head, tuple(-d for d in departures), record)
-
-    def _rapid(self, head: int, departures: tuple[float, ...], record: int | None) -> None:
-        before, move, after = self._rapid_blocks(head, departures, record)
-        for block in (*before, move, *after):
-            self.alone(block)
-
-    def _rapid_blocks(
-        self, head: int, departures: tuple[float, ...], record: int | None
-    ) -> tuple[list[Block], Block, list[Block]]:
-        at = self.positions[head]
-        assert at is not None
-        return self.heads[head - 1].rapid_move(departures, at, record)
 
     def text(self, text: str, record: int | None) -> None:
         """A postprocessor comment (CODE +9) in the listing."""
@@ -285,6 +244,7 @@ class GMOUT:
     def alone(self, block: Block) -> None:
         """GMOUT(IH = 1 or 2): a head's block by itself."""
         head = block.head or 1
+        self.parking.before_alone(block)
         if block.code in CIRCLE_CODES:
             self._prephd(head, block.record)
         self._account(block, head)
@@ -293,6 +253,7 @@ class GMOUT:
 
     def combined(self, first: Block, second: Block) -> None:
         """GMOUT(IH = 3 or 4): both heads' blocks in one tape block."""
+        self.parking.before_combined(first, second)
         self._account_pair(first, second)
         primary = self.preferred
         circle_first, circle_second = (b.code in CIRCLE_CODES for b in (first, second))
@@ -341,7 +302,9 @@ class GMOUT:
             head = part.head or 1
             if part.cells[20] is not ABSENT:
                 self.rpm[head] = _number(part.cells[20])
-            if part.position is not None:
+            if part.position is not None and part.code is not Code.FROM:
+                self.parking.moved(head, part)
+            elif part.position is not None:
                 self.positions[head] = part.position
         self.sinks.emit(block)
 

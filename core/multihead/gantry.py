@@ -1,0 +1,116 @@
+"""Common-axis merging (FXMULT, manual §3.4.8.2.1.3, 001 L7897-8402, write-up L31712-31832):
+on a machine whose heads share an axis (option 155: 1 X, 2 Y, 3 Z of the CL axes), a
+combined block must move both heads alike along it. The heads' lines are paired by their
+coordinates on the axis (core/multihead/common_axis.py): the longer path is cut where the
+other ends (SEG), a head behind or still on the axis cuts alone first, and a pair whose
+component feeds along the axis differ by more than option 157 is cut one head after the
+other (FXTOL). Only lines combine (L7992-7994): circles and dwells go out alone. Before a
+head cuts alone along the axis the other is parked; a head the axis has moved returns to
+its point first (core/multihead/parking.py). This works with one feedrate register or two.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from gecent.core.machine.definition import MachineDefinition
+from gecent.core.multihead.common_axis import AxisRule, common_axis_step, component_feeds_agree
+from gecent.core.multihead.equal_time import HeadMoves
+from gecent.core.multihead.gmout import GMOUT
+from gecent.core.multihead.split import Move, split_move
+from gecent.core.output.block import Block
+
+
+def merge_common_axis(
+    machine: MachineDefinition, moves: list[Iterator[Block]], out: GMOUT, axis: int
+) -> list[Block | None] | None:
+    """The FXMULT loop over both heads' moves of a combined section; the moves not yet
+    output are returned when an OP restriction stops the combined cut."""
+    tolerance = machine.number_option(157)
+    heads = [
+        HeadMoves(converter, blocks) for converter, blocks in zip(out.heads, moves, strict=True)
+    ]
+    out.summed = None  # heads cutting alone keep the other waiting: the times add up
+    streams = [heads[0].moves(), heads[1].moves()]
+    pending: list[Move | None] = [next(streams[0], None), next(streams[1], None)]
+    while pending[0] is not None and pending[1] is not None:
+        move_1, move_2 = pending
+        assert move_1 is not None and move_2 is not None
+        if out.restricted(_source(move_1), _source(move_2)):
+            return [heads[0].block(move_1), heads[1].block(move_2)]
+        lines = [m.arc is None and m.dwell_minutes == 0.0 for m in (move_1, move_2)]
+        if not all(lines):
+            index = 0 if not lines[0] else 1  # a circle or a dwell: alone, in its turn
+            _alone(out, heads[index], pending[index])
+            pending[index] = next(streams[index], None)
+            continue
+        s1, s2 = heads[0].start(move_1, axis), heads[1].start(move_2, axis)
+        e1, e2 = s1 + move_1.departures[axis], s2 + move_2.departures[axis]
+        step = common_axis_step(s1, e1, s2, e2)
+        if step.rule is AxisRule.SEPARATE:
+            for index in (0, 1):
+                _alone(out, heads[index], pending[index])
+                pending[index] = next(streams[index], None)
+            continue
+        if step.rule is AxisRule.CATCH_UP:
+            index = (step.head or 1) - 1
+            move = pending[index]
+            assert move is not None
+            rest = None
+            if step.at is not None and 0.0 < step.fraction < 1.0:
+                move, rest = split_move(move, step.fraction)
+            _alone(out, heads[index], move)
+            pending[index] = rest if rest is not None else next(streams[index], None)
+            continue
+        pieces: list[Move] = [move_1, move_2]
+        rests: list[Move | None] = [None, None]
+        if step.rule is AxisRule.SEGMENT:
+            index = (step.head or 1) - 1
+            pieces[index], rests[index] = split_move(pieces[index], step.fraction)
+        if _feeds_agree(pieces[0], pieces[1], axis, tolerance):
+            _together(out, heads, pieces)
+        else:  # FXTOL: out of tolerance, each head cuts its piece alone
+            for index in (0, 1):
+                _alone(out, heads[index], pieces[index])
+        for index in (0, 1):
+            pending[index] = rests[index] or next(streams[index], None)
+    for index in (0, 1):
+        while pending[index] is not None:
+            _alone(out, heads[index], pending[index])
+            pending[index] = next(streams[index], None)
+    return None
+
+
+def _source(move: Move) -> Block:
+    assert isinstance(move.source, Block)
+    return move.source
+
+
+def _feeds_agree(first: Move, second: Move, axis: int, tolerance: float) -> bool:
+    return component_feeds_agree(
+        first.departures[axis],
+        first.length,
+        first.feed,
+        second.departures[axis],
+        second.length,
+        second.feed,
+        tolerance,
+    )
+
+
+def _together(out: GMOUT, heads: list[HeadMoves], pieces: list[Move]) -> None:
+    first, second = heads[0].block(pieces[0]), heads[1].block(pieces[1])
+    if first is not None and second is not None:
+        out.combined(first, second)
+        return
+    for block in (first, second):
+        if block is not None:
+            out.alone(block)
+
+
+def _alone(out: GMOUT, head: HeadMoves, move: Move | None) -> None:
+    if move is None:
+        return
+    block = head.block(move)
+    if block is not None:
+        out.alone(block)

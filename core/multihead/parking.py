@@ -1,0 +1,218 @@
+"""Parking the heads (FXPARK with PARK, RETHD and DRETHD, manual §3.4.8.2.1.3, 001
+L7971-7992, L8026-8033, L31834-31915; §2.4.5.1, L2117-2130).
+
+A head is parked by moving it by the departures of its SAFETY statement (SAFHD1, SAFHD2)
+at rapid; the other head is withdrawn with it and brought back, so that neither mars the
+work, and a comment is printed. A parked head returns to the point it is to cut from.
+
+On a machine whose heads share a common axis (option 155, a gantry) every move of one head
+along that axis moves the other with it ("once parked, only the common axis value changes
+for the head", L7986-7990): before a head moves along the axis alone the other is parked,
+and a head whose axis value has been moved returns to its own point before it cuts again.
+The write-ups of PARK, RETHD and DRETHD are not in the seeds (only their call lists,
+L20771-20784); the comments' texts are gecent's (docs/decisions.md).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from typing import Protocol
+
+from gecent.core.errors import Diagnostic, InputError
+from gecent.core.machine.definition import MachineDefinition
+from gecent.core.output.block import Block, Code
+
+
+class HeadOutput(Protocol):
+    """A head's converter, as parking uses it (core/multihead/gmout.py HeadConverter)."""
+
+    @property
+    def step(self) -> float: ...
+
+    def rapid_move(
+        self, departures: tuple[float, ...], at: tuple[int, ...], record: int | None
+    ) -> tuple[list[Block], Block, list[Block]]: ...
+
+
+class Output(Protocol):
+    """GMOUT, as parking uses it."""
+
+    machine: MachineDefinition
+    positions: dict[int, tuple[int, ...] | None]
+
+    @property
+    def head_outputs(self) -> Sequence[HeadOutput]: ...
+
+    def warn(self, diagnostic: Diagnostic) -> None: ...
+
+    def text(self, text: str, record: int | None) -> None: ...
+
+    def alone(self, block: Block) -> None: ...
+
+    def combined(self, first: Block, second: Block) -> None: ...
+
+
+class Parking:
+    def __init__(self, out: Output) -> None:
+        self.out = out
+        self.safety: dict[int, tuple[float, ...] | None] = {1: None, 2: None}
+        self.parked = {1: False, 2: False}
+        option = int(out.machine.number_option(155))
+        self.axis: int | None = option - 1 if option in (1, 2, 3) else None
+        self.making = 0  # > 0 while parking or returning moves are made (no nesting)
+        self.dragged_warned = {1: False, 2: False}
+
+    def safety_given(self, head: int, departures: tuple[float, ...]) -> None:
+        """A SAFETY information block (DBFSEG(11) = 1): SAFHD1 or SAFHD2."""
+        axis = self.axis
+        if axis is not None and departures[axis] != 0.0:
+            raise InputError(
+                f"SAFETY of head {head} withdraws it along the heads' common axis "
+                f"({'XYZ'[axis]}, option 155), which would move the other head with it"
+            )
+        self.safety[head] = departures
+
+    # -- parking and returning ------------------------------------------------------
+
+    def park(self, head: int, record: int | None) -> None:
+        """PARK: withdraw ``head`` by its SAFETY departures at rapid, the other head
+        withdrawn with it and brought back, and the comment; a head with no SAFETY stays
+        where it is, with a diagnostic."""
+        out = self.out
+        departures = self.safety[head]
+        if departures is None or out.positions[head] is None:
+            out.warn(Diagnostic(f"HEAD {head} NOT PARKED: NO SAFETY WAS GIVEN FOR IT", None))
+            return
+        other = 3 - head
+        self.parked[head] = True
+        out.text(f"HEAD {head} PARKED", record)
+        withdrawn = self.safety[other]
+        self.making += 1
+        try:
+            if withdrawn is None or out.positions[other] is None or self.parked[other]:
+                self._rapid(head, departures, record)
+                return
+            moves = {head: departures, other: withdrawn}
+            blocks = [self._rapid_blocks(h, moves[h], record) for h in (1, 2)]
+            for before, _, _ in blocks:
+                for block in before:
+                    out.alone(block)
+            out.combined(blocks[0][1], blocks[1][1])
+            for _, _, after in blocks:
+                for block in after:
+                    out.alone(block)
+            self._rapid(other, tuple(-d for d in withdrawn), record)
+        finally:
+            self.making -= 1
+
+    def unpark(self, head: int, record: int | None) -> None:
+        """RETHD: the parked head back to where it was withdrawn from, with the comment."""
+        departures = self.safety[head]
+        if not self.parked[head] or departures is None:
+            return
+        self.parked[head] = False
+        self.out.text(f"HEAD {head} RETURNED TO THE WORK", record)
+        self.making += 1
+        try:
+            self._rapid(head, tuple(-d for d in departures), record)
+        finally:
+            self.making -= 1
+
+    def _rapid(self, head: int, departures: tuple[float, ...], record: int | None) -> None:
+        before, move, after = self._rapid_blocks(head, departures, record)
+        for block in (*before, move, *after):
+            self.out.alone(block)
+
+    def _rapid_blocks(
+        self, head: int, departures: tuple[float, ...], record: int | None
+    ) -> tuple[list[Block], Block, list[Block]]:
+        at = self.out.positions[head]
+        assert at is not None
+        return self.out.head_outputs[head - 1].rapid_move(departures, at, record)
+
+    # -- the common axis ------------------------------------------------------------
+
+    def moved(self, head: int, block: Block) -> None:
+        """A head's move went out: where it stands, and on a common axis where the other
+        head now stands too."""
+        positions = self.out.positions
+        assert block.position is not None
+        positions[head] = block.position
+        axis = self.axis
+        other = positions[3 - head]
+        if axis is None or other is None or axis >= len(other) or block.steps is None:
+            return
+        if other[axis] != block.position[axis]:
+            changed = list(other)
+            changed[axis] = block.position[axis]
+            positions[3 - head] = tuple(changed)
+
+    def before_alone(self, block: Block) -> None:
+        """On a common axis: a head's move starts from its own point (a return first when
+        the axis has moved it, or it is parked), and the other head is parked before this
+        one moves along the axis."""
+        if self.axis is None or self.making or block.steps is None or block.position is None:
+            return
+        if block.code is Code.FROM:
+            return
+        head = block.head or 1
+        self._to_start(head, _start(block), block.record)
+        if block.steps[self.axis] != 0:
+            self._clear_way(3 - head, block.record)
+
+    def before_combined(self, first: Block, second: Block) -> None:
+        """On a common axis: both heads at their own points before they cut together."""
+        if self.axis is None or self.making:
+            return
+        for block in (first, second):
+            if block.steps is not None and block.position is not None:
+                self._to_start(block.head or 1, _start(block), block.record)
+
+    def _to_start(self, head: int, start: tuple[int, ...], record: int | None) -> None:
+        """RETHD/DRETHD: the head back to ``start``; the other parked first when the way
+        back moves the common axis."""
+        out = self.out
+        at = out.positions[head]
+        if at is None or (not self.parked[head] and at == start):
+            return
+        assert self.axis is not None
+        departures = [s - a for s, a in zip(start, at, strict=False)]
+        if self.axis < len(departures) and departures[self.axis] != 0:
+            self._clear_way(3 - head, record)
+            at = out.positions[head]
+            assert at is not None
+            departures = [s - a for s, a in zip(start, at, strict=False)]
+        if self.parked[head]:
+            self.parked[head] = False
+            out.text(f"HEAD {head} RETURNED TO THE WORK", record)
+        step = out.head_outputs[head - 1].step
+        self.making += 1
+        try:
+            self._rapid(head, tuple(d * step for d in departures), record)
+        finally:
+            self.making -= 1
+
+    def _clear_way(self, head: int, record: int | None) -> None:
+        """The head is parked before the other moves the common axis under it; with no
+        SAFETY it rides along in the work, with a diagnostic once."""
+        if self.parked[head] or self.out.positions[head] is None:
+            return
+        if self.safety[head] is None:
+            if not self.dragged_warned[head]:
+                self.dragged_warned[head] = True
+                self.out.warn(
+                    Diagnostic(
+                        f"HEAD {head} MOVES WITH THE COMMON AXIS IN THE WORK: NO SAFETY WAS "
+                        "GIVEN TO PARK IT",
+                        None,
+                    )
+                )
+            return
+        self.park(head, record)
+
+
+def _start(block: Block) -> tuple[int, ...]:
+    """The point a move starts from (steps): where it ends less its departures."""
+    assert block.position is not None and block.steps is not None
+    steps = block.steps + (0,) * (len(block.position) - len(block.steps))
+    return tuple(p - s for p, s in zip(block.position, steps, strict=True))
