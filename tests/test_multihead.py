@@ -10,10 +10,12 @@ import tempfile
 from pathlib import Path
 
 import pytest
+from click.testing import CliRunner
 from gecent.core.absent import ABSENT
 from gecent.core.cl.records import Comment
+from gecent.core.cli import main
 from gecent.core.dispatch.post import post
-from gecent.core.errors import InputError, NotYetSupported
+from gecent.core.errors import FatalError, InputError, NotYetSupported
 from gecent.core.macros.dialect import read_raw
 from gecent.core.output.block import Block, Code
 from gecent.core.output.tape import tape_line
@@ -353,3 +355,34 @@ def test_w18_a_pair_the_control_cannot_cut_together_is_not_split(plugins: Plugin
     assert len(circles) == 1 and circles[0].head == 2
     assert tape_line(circles[0]) == "G31U+0005W-0005H0005E0020"
     assert result.cut_minutes == pytest.approx(0.1 + 0.05 + 0.05 + 0.25 * 3.14159265 / 10 + 0.05)
+
+
+def test_the_manuals_multihead_fatal_errors(plugins: PluginSet, tmp_path: Path) -> None:
+    """1020 (OP numbers of a head may not go down, 001 L29000-29010 catalogue), 7003 (only
+    one head selected) and 3000 (a printout other than GEOUT3 given a multihead block)."""
+    program = tmp_path / "p.apt"
+    program.write_text(SEQUENCING.read_text().replace("OP/4\n", "OP/2\n", 1))
+    with pytest.raises(FatalError) as raised:
+        post(str(program), plugins)
+    assert raised.value.number == 1020
+    text = SEQUENCING.read_text()
+    head_2 = text[text.index("SELECT/HEAD,2\nOP/2") : text.index("FINI")]
+    program.write_text(text.replace(head_2, "").replace("SELECT/HEAD,2\nFROM/20,10,0\n", ""))
+    with pytest.raises(FatalError) as raised:
+        post(str(program), plugins)
+    assert raised.value.number == 7003
+    machine = tmp_path / "m51.toml"
+    machine.write_text(
+        (ROOT / "plugins" / "machines" / "mach51.toml")
+        .read_text()
+        .replace("164 = 3.0", "164 = 1.0")
+    )
+    tape, listing = tmp_path / "p.tape", tmp_path / "p.lis"
+    result = CliRunner().invoke(
+        main,
+        ["post", str(SEQUENCING), "--machine", str(machine), "-o", str(tape),
+         "--listing", str(listing)],
+    )  # fmt: skip
+    assert result.exit_code == 1
+    assert "fatal error 3000" in result.output
+    assert (not tape.exists() and "GEDUMP" in listing.read_text().upper()) or listing.exists()

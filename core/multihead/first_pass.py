@@ -82,6 +82,7 @@ class FirstPass:
             self.runs.append(run)
         self.selected: Run | None = None  # None: every head (before the first SELECT/HEAD)
         self.record: Record | None = None
+        self.used: set[int] = set()  # the heads SELECT/HEAD has named
 
     def process(self, records: Iterator[Record]) -> RunResult:
         """Run the whole file through; the scratch tapes are ready to read after it. On
@@ -92,6 +93,10 @@ class FirstPass:
                 self._route(record)
             for run in self.runs:
                 run.end_of_input()
+            if len(self.used) < MAX_HEADS:
+                raise FatalError(
+                    7003, "COMBIN/2 was given, but the program selects one head only"
+                )
         except (FatalError, RunStopped) as error:
             if error.where is None and self.record is not None:
                 error.where = self.record.where
@@ -139,6 +144,7 @@ class FirstPass:
         ):
             raise InputError(f"SELECT/HEAD expects a head number 1..{MAX_HEADS}", record.where)
         self.selected = self.runs[int(rest[0]) - 1]
+        self.used.add(int(rest[0]))
 
     def remove(self) -> None:
         for tape in self.tapes:

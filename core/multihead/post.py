@@ -6,7 +6,8 @@ from __future__ import annotations
 from collections.abc import Callable, Iterator
 
 from gecent.core.cl.records import Record
-from gecent.core.errors import Diagnostic, GecentError, InternalError
+from gecent.core.dump import state_dump
+from gecent.core.errors import Diagnostic, FatalError, GecentError, InternalError
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.multihead.first_pass import FirstPass
 from gecent.core.multihead.gemult import MergePass
@@ -42,6 +43,16 @@ def post_multihead(
         # (the machine as the program left it: MACHIN may have changed options)
         merge = MergePass(first.runs[0].machine, first.tapes, sinks, warn)
         merge.run()
+    except FatalError as error:
+        # the manual's fatal error: the listing is kept, with the dump (GEDUMP)
+        first.remove()
+        if isinstance(error.partial, RunResult):  # met in the first pass, by a head's run
+            result.dump = error.partial.dump
+        else:  # met in the merge pass
+            result.dump = state_dump(str(error), first.runs[0].state, None)
+        error.partial = result
+        sinks.close(Ending(False, dump=result.dump))
+        raise
     except GecentError:
         first.remove()
         sinks.close(Ending(False))

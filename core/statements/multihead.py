@@ -13,7 +13,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from gecent.core.cl.records import Statement, Word
-from gecent.core.errors import InputError, NotYetSupported
+from gecent.core.errors import FatalError, InputError, NotYetSupported
 from gecent.core.output.block import Block, Code
 
 if TYPE_CHECKING:
@@ -67,6 +67,12 @@ def op(run: Post, statement: Statement) -> None:
     number = args.pop(0) if args else None
     if number is None or isinstance(number, Word) or number != int(number) or number < 1:
         raise InputError(usage, statement.where)
+    if number < run.state.multihead_op:
+        raise FatalError(
+            1020,
+            f"OP/{number:g} after OP/{run.state.multihead_op} on head {head}",
+            statement.where,
+        )
     block = Block(Code.MULTIHEAD_1, statement.number)
     cells = block.cells
     cells[2] = float(number)

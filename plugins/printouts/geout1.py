@@ -33,6 +33,7 @@ from gecent.plugins.printouts.layout import (
     lines_per_page,
     machine_title,
     needed,
+    single_head,
     speed_text,
     spread,
 )
@@ -224,6 +225,8 @@ class Geout1Pages:
         )
 
     def block(self, block: Block, line: str | None) -> str:
+        if block.head > 1 or block.halves is not None:
+            single_head(block, "GEOUT1")
         tally = self.tally
         tally.count(block, line)
         if not block.printed:

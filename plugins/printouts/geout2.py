@@ -29,6 +29,7 @@ from gecent.plugins.printouts.layout import (
     centred_heading,
     lines_per_page,
     machine_title,
+    single_head,
 )
 from gecent.plugins.printouts.lines import DataLines, data_columns
 
@@ -84,6 +85,7 @@ class Geout2Pages:
         )
 
     def block(self, block: Block, line: str | None) -> str:
+        single_head(block, "GEOUT2")
         tally = self.tally
         tally.count(block, line)
         data = self.data

@@ -13,7 +13,7 @@ from dataclasses import dataclass
 from math import ceil
 from typing import TYPE_CHECKING, Any
 
-from gecent.core.errors import InputError, SourcePosition
+from gecent.core.errors import FatalError, InputError, SourcePosition
 from gecent.core.machine.definition import MachineDefinition, RegisterSet
 from gecent.core.machine.shuffle import cell_map
 from gecent.core.output.block import Block, Code
@@ -263,3 +263,16 @@ class Pages:
             dwell=dwell,
             **self.frame(),
         )
+
+
+def single_head(block: Block, name: str) -> None:
+    """GEOUT1, GEOUT2 and GEOUT4 print one head's registers: a multihead program's head-2
+    or combined block (CODE +-17) is the manual's fatal error 3000 (GEPR01; "processed
+    only in GEOUT3; in other GEOUTs it is an error", 001 L9395-9402)."""
+    if block.halves is not None or block.head > 1:
+        raise FatalError(
+            3000,
+            f"{name} cannot print a head-2 or combined block of a multihead program; "
+            "multihead machines use GEOUT3 (option 164 = 3)",
+        )
+

@@ -37,6 +37,7 @@ from gecent.plugins.printouts.layout import (
     centred_heading,
     lines_per_page,
     machine_title,
+    single_head,
 )
 from gecent.plugins.printouts.lines import DataLines, data_columns
 
@@ -82,6 +83,7 @@ class MultiplePrintout:
     def parts(self, block: Block) -> Sequence[tuple[int, Block]]:
         """The parts of a numeric block, each with the index of the head (layout) it is
         printed under: the block itself, under the only head."""
+        single_head(block, self.name)
         return ((0, block),)
 
     def listing(self, machine: MachineDefinition, partno: Callable[[], str]) -> MultiplePages:
