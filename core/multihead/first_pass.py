@@ -94,9 +94,7 @@ class FirstPass:
             for run in self.runs:
                 run.end_of_input()
             if len(self.used) < MAX_HEADS:
-                raise FatalError(
-                    7003, "COMBIN/2 was given, but the program selects one head only"
-                )
+                raise FatalError(7003, "COMBIN/2 was given, but the program selects one head only")
         except (FatalError, RunStopped) as error:
             if error.where is None and self.record is not None:
                 error.where = self.record.where

@@ -275,4 +275,3 @@ def single_head(block: Block, name: str) -> None:
             f"{name} cannot print a head-2 or combined block of a multihead program; "
             "multihead machines use GEOUT3 (option 164 = 3)",
         )
-
