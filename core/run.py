@@ -97,6 +97,7 @@ class Run(Elements):
         self.report = report
         self.state = PostState(machine)
         self.finished = False
+        self.quiet = False  # warnings dropped (a multihead record head 1 has warned about)
         self._file = ""
         self._record: Record | None = None
         self._before: Record | None = None  # the record before it (an arc goes out late)
@@ -139,6 +140,8 @@ class Run(Elements):
         return self._builtin_statements[major]
 
     def warn(self, diagnostic: Diagnostic) -> None:
+        if self.quiet:
+            return
         self.result.warnings += 1
         if self.report is not None:
             self.report(diagnostic)

@@ -56,7 +56,8 @@ def test_the_two_head_example_posts_block_by_block(tmp_path: Path) -> None:
     assert combined == [["HEAD1", "021", "01", "-000.5", "0200"], ["HEAD2", "-002.", "0040"]]
     absolute = text.split("*** ABSOLUTE ***")[1].split("*** OPERATOR ***")[0]
     assert "HEAD2           +0007.000       +0005.000" in absolute  # the last point of head 2
-    assert "CUT TIME 1.11 MIN; DWELL TIME 0.00 MIN;" in text
+    # 0.2 (OP/1) + 0.125 (OP/2) + max(0.3285, 0.6768) (OP/3) + max(0.3041, 0.375) (OP/4)
+    assert "CUT TIME 1.38 MIN; DWELL TIME 0.00 MIN;" in text
 
 
 def test_four_printouts_are_listed() -> None:

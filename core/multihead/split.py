@@ -20,7 +20,7 @@ command (GFDLIM, spec 08 W-5) are not here: ``FeedCommand.command`` and
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Iterator, Sequence
+from collections.abc import Callable, Generator, Iterable, Sequence
 from dataclasses import dataclass, replace
 from enum import Enum, IntEnum
 from functools import cached_property
@@ -332,26 +332,48 @@ class MergedPair:
 
 
 def equal_time_merge(
-    moves_1: Iterable[Move], moves_2: Iterable[Move], tmax: float, band_percent: float
-) -> Iterator[MergedPair]:
+    moves_1: Iterable[Move],
+    moves_2: Iterable[Move],
+    tmax: float,
+    band_percent: float,
+    together: Callable[[Move, Move], bool] | None = None,
+    stop: Callable[[Move, Move], bool] | None = None,
+) -> Generator[MergedPair, None, tuple[Move | None, Move | None]]:
     """The GMLINE/GMCIRL loop (001 L7390-7530, L7700-7890): pair the heads' moves in order,
     splitting or slowing each pair to one time; a split's rest is paired with the other
     head's next move. When one head has no moves left, the other's go out alone (Rule 1:
     the finished head waits). A move that takes no time has no ratio and goes out alone.
-    Both inputs are read one move at a time, so either may be an endless stream.
+
+    ``together`` says whether the control can cut a pair at once (option 156): when it
+    cannot, nothing is split and the head behind in time goes on alone. ``stop`` ends the
+    loop before a pair (an OP restriction broken): the generator then returns the two
+    moves not yet output (a split's rest among them). Both inputs are read one move at a
+    time, so either may be an endless stream.
     """
     one, two = iter(moves_1), iter(moves_2)
     move_1, move_2 = next(one, None), next(two, None)
+    behind = [0.0, 0.0]  # each head's time so far
     while move_1 is not None and move_2 is not None:
-        if move_1.time == 0.0:
+        if stop is not None and stop(move_1, move_2):
+            return move_1, move_2
+        alone = None
+        if move_1.time == 0.0 or move_2.time == 0.0:
+            alone = 1 if move_1.time == 0.0 else 2
+        elif together is not None and not together(move_1, move_2):
+            alone = 1 if behind[0] <= behind[1] else 2
+        if alone == 1:
+            behind[0] += move_1.time
             yield MergedPair(move_1, None, None)
             move_1 = next(one, None)
             continue
-        if move_2.time == 0.0:
+        if alone == 2:
+            behind[1] += move_2.time
             yield MergedPair(None, move_2, None)
             move_2 = next(two, None)
             continue
         step = equal_time_step(move_1.time, move_2.time, tmax, band_percent)
+        behind[0] += step.time
+        behind[1] += step.time
         if step.rule is MergeRule.SPLIT and step.head == 1:
             piece, move_1 = split_move(move_1, step.fraction)
             yield MergedPair(piece, move_2, step)
@@ -374,6 +396,7 @@ def equal_time_merge(
     while move_2 is not None:
         yield MergedPair(None, move_2, None)
         move_2 = next(two, None)
+    return None, None
 
 
 def linear_head_offsets(

@@ -264,6 +264,10 @@ class OutputElement:
         self._put_dwell(block, seconds)
         return block
 
+    def put_dwell(self, block: Block, seconds: float) -> None:
+        """The dwell's G and time word in the machine's dwell register (option 57)."""
+        self._put_dwell(block, seconds)
+
     def _put_dwell(self, block: Block, seconds: float) -> None:
         machine = self.state.machine
         register = int(machine.number_option(57))
@@ -317,6 +321,11 @@ class OutputElement:
             return None
         self.store_m(code)
         return code
+
+    def motion(self, block: Block) -> None:
+        """A motion block's dimension G, feed command and cutting time (OUTPUT's CONTUR
+        part): the multihead merge pass finishes the pieces of a split move with it."""
+        self._motion(block)
 
     def _motion(self, block: Block) -> None:
         assert block.steps is not None

@@ -127,6 +127,13 @@ def safety(run: Post, statement: Statement) -> None:
             "SAFETY on a multihead program expects the head's withdrawal departures dx, dy, dz",
             statement.where,
         )
+    common = int(run.machine.number_option(155))
+    if common in (1, 2, 3) and args[common - 1] != 0:
+        raise InputError(
+            f"SAFETY withdraws head {run.state.head} along the heads' common axis "
+            f"({'XYZ'[common - 1]}, option 155), which would move the other head with it",
+            statement.where,
+        )
     block = Block(Code.MULTIHEAD_1, statement.number)
     block.cells[2] = float(run.state.multihead_op)
     for axis, value in enumerate(args):
