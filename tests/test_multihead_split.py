@@ -581,3 +581,34 @@ def test_w5_gfdlim_divides_below_fcomax() -> None:
     assert command == 333.0
     # I, J, K carry the departures times the divisor (FeedOptimiser.multiplied)
     assert (3 * constant, 4 * constant) == (9, 12)
+
+
+@pytest.mark.parametrize(
+    ("metric", "bands"),
+    [
+        # English: 0-.0999, .1-.9999, 1.0-9.9999, 10.0-99.9999, 100.0-999.9999
+        (False, [(0.0999, 13), (0.1, 12), (0.9999, 12), (1.0, 2), (9.9999, 2), (10.0, 11),
+                 (99.9999, 11), (100.0, 14), (999.9999, 14)]),
+        # metric: 0-.999, 1.0-9.999, 10.0-99.999, 100.0-999.999
+        (True, [(0.999, 13), (1.0, 12), (9.999, 12), (10.0, 2), (99.999, 2), (100.0, 11),
+                (999.999, 11)]),
+    ],
+)  # fmt: skip
+def test_w12_selgcd_length_bands(metric: bool, bands: list[tuple[float, int]]) -> None:
+    """Spec 08 W-12 (SELGCD, 001 L37008-37031): the bands of the dimension G codes the
+    merge pass gives the pieces of a split move; they are SELG's (core/motion/gcode.py),
+    a piece's G chosen as every block's is (docs/decisions.md)."""
+    from dataclasses import replace
+
+    from gecent.core.machine import standard_machine
+    from gecent.core.motion.gcode import LinearCodes
+
+    machine = standard_machine().with_options({138: 1.0 if metric else 0.0, 4: 999.9999})
+    tableg = list(machine.tableg)
+    for location, code in ((13, 10), (12, 11), (2, 1), (11, 12), (14, 13)):
+        tableg[location] = code
+    machine = replace(machine, tableg=tuple(tableg))
+    step = 0.001 if metric else 0.0001
+    codes = LinearCodes(machine, step)
+    for length, location in bands:
+        assert codes.select(round(length / step)).location == location, length

@@ -339,7 +339,7 @@ class GMOUT:
             if part.position is not None and part.code is not Code.FROM:
                 self.parking.moved(head, part)
             elif part.position is not None:
-                self.positions[head] = part.position
+                self.parking.placed(head, part)
         self.sinks.emit(block)
 
     def _prephd(self, head: int, record: int | None) -> None:

@@ -126,6 +126,25 @@ class Parking:
 
     # -- the common axis ------------------------------------------------------------
 
+    def placed(self, head: int, block: Block) -> None:
+        """A head's FROM: on a common axis both heads' FROMs name the one coordinate of the
+        axis; two that differ leave the axis to move between them, with a diagnostic."""
+        positions = self.out.positions
+        assert block.position is not None
+        positions[head] = block.position
+        other = positions[3 - head]
+        axis = self.axis
+        if axis is None or other is None or axis >= len(other):
+            return
+        if other[axis] != block.position[axis]:
+            self.out.warn(
+                Diagnostic(
+                    f"THE HEADS' FROM POINTS DIFFER ON THE COMMON AXIS {'XYZ'[axis]}: IT IS ONE "
+                    "COORDINATE FOR BOTH HEADS, AND MOVES FROM ONE TO THE OTHER",
+                    None,
+                )
+            )
+
     def moved(self, head: int, block: Block) -> None:
         """A head's move went out: where it stands, and on a common axis where the other
         head now stands too."""

@@ -7,7 +7,15 @@ from collections.abc import Callable, Iterator
 
 from gecent.core.cl.records import Record
 from gecent.core.dump import state_dump
-from gecent.core.errors import Diagnostic, FatalError, GecentError, InternalError
+from gecent.core.errors import (
+    Diagnostic,
+    FatalError,
+    GecentError,
+    InputError,
+    InternalError,
+    NotYetSupported,
+    SourcePosition,
+)
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.multihead.first_pass import FirstPass
 from gecent.core.multihead.gemult import MergePass
@@ -56,7 +64,13 @@ def post_multihead(
         else:  # met in the merge pass
             result.dump = state_dump(str(error), first.runs[0].state, None)
         error.partial = result
+        if error.where is None and first.record is not None:
+            error.where = SourcePosition(first.record.file)
         ending = Ending(False, dump=result.dump)
+        raise
+    except (InputError, NotYetSupported) as error:
+        if error.where is None and first.record is not None:
+            error.where = SourcePosition(first.record.file)  # (met in the merge pass)
         raise
     except GecentError:
         raise
