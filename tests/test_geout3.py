@@ -48,14 +48,20 @@ def test_the_two_head_example_posts_block_by_block(tmp_path: Path) -> None:
     for kind in ("INCREMENTAL", "ABSOLUTE", "OPERATOR"):  # option 17 = 111
         assert f"*** {kind} ***" in text
     incremental = text.split("*** ABSOLUTE ***")[0].splitlines()
-    # a title line per head, in each head's letters
-    assert incremental[4].split() == ["N", "G", "X", "Z", "I", "K", "F", "S", "T", "M"]
-    assert incremental[5].split() == ["G", "U", "W", "H", "J", "E", "S", "T", "M"]
+    assert incremental[3] == "TWO-HEAD LATHE EXAMPLE"  # the PARTNO heads every page
+    # a title line per head, in each head's letters, head 2's registers under head 1's
+    # (W17, 001 L9751-9757): head 2 has no N, its U under X, W under Z, E under F
+    first, second = incremental[4], incremental[5]
+    assert first.split() == ["N", "G", "X", "Z", "I", "K", "F", "S", "T", "M"]
+    assert second.split() == ["G", "U", "W", "H", "J", "E", "S", "T", "M"]
+    for one, two in (("G", "G"), ("X", "U"), ("Z", "W"), ("I", "H"), ("F", "E")):
+        assert first.index(f" {one}") == second.index(f" {two}")
     combined = [line.split() for line in incremental if line.startswith("HEAD")][7:9]
     # N021's two halves: one tape block, two lines
     assert combined == [["HEAD1", "021", "01", "-000.5", "0200"], ["HEAD2", "-002.", "0040"]]
     absolute = text.split("*** ABSOLUTE ***")[1].split("*** OPERATOR ***")[0]
-    assert "HEAD2           +0007.000       +0005.000" in absolute  # the last point of head 2
+    last = [line.split() for line in absolute.splitlines() if line.startswith("HEAD2")][-1]
+    assert last == ["HEAD2", "+0007.000", "+0005.000", "8."]  # head 2's last point, 8 IPM
     # 0.2 (OP/1) + 0.125 (OP/2) + max(0.3285, 0.6768) (OP/3) + max(0.3041, 0.375) (OP/4)
     assert "CUT TIME 1.38 MIN; DWELL TIME 0.00 MIN;" in text
 
@@ -83,3 +89,40 @@ def test_mach40_posts_with_its_geout2(tmp_path: Path) -> None:
     assert any(line.startswith("INC") for line in lines)
     assert any(line.startswith("ABS") for line in lines)
     assert any(line.startswith("OPR") for line in lines)
+
+
+def test_each_head_has_its_own_origin(tmp_path: Path) -> None:
+    """The Operator printout is each head's summed values less its own ORIGIN (OPRVAL
+    and OPRVL2, 001 L9812-9882): head 1's ORIGIN/1,1,0 moves head 1's lines only."""
+    program = tmp_path / "p.apt"
+    program.write_text(
+        EXAMPLE.read_text().replace(
+            "SELECT/HEAD,1\nFROM/6,4,0", "SELECT/HEAD,1\nORIGIN/1,1,0\nFROM/6,4,0"
+        )
+    )
+    listing = tmp_path / "p.lis"
+    result = CliRunner().invoke(
+        main, ["post", str(program), "-o", str(tmp_path / "p.tape"), "--listing", str(listing)]
+    )
+    assert result.exit_code == 0, result.output
+    operator = listing.read_text().split("*** OPERATOR ***")[1]
+    froms = [line.split() for line in operator.splitlines() if "FROM" in line]
+    assert froms == [
+        ["HEAD1", "FROM", "+0005.000", "+0003.000"],  # (6, 4) less (1, 1)
+        ["HEAD2", "FROM", "+0007.000", "+0005.000"],  # no ORIGIN of its own
+    ]
+
+
+def test_the_first_machin_chooses_the_printout(tmp_path: Path) -> None:
+    """MACHIN/GECENT,23,OPTAB,164,4 in the CL file, as the manual's GEOUT4 sample chooses
+    its printout (001 L10011): the listing is GEOUT4's."""
+    program = tmp_path / "p.apt"
+    program.write_text(
+        "PARTNO P\nMACHIN/GECENT,23,OPTAB,164,4\nFROM/0,0,1\nFEDRAT/20\nGOTO/1,1,0\nFINI\n"
+    )
+    listing = tmp_path / "p.lis"
+    result = CliRunner().invoke(
+        main, ["post", str(program), "-o", str(tmp_path / "p.tape"), "--listing", str(listing)]
+    )
+    assert result.exit_code == 0, result.output
+    assert "*** INCREMENTAL ***" in listing.read_text()

@@ -6,9 +6,9 @@ from __future__ import annotations
 from collections.abc import Callable, Iterator
 
 from gecent.core.cl.records import Record
-from gecent.core.errors import Diagnostic
+from gecent.core.errors import Diagnostic, GecentError
 from gecent.core.machine.definition import MachineDefinition
-from gecent.core.machine.selection import first_machin, resolve_machine
+from gecent.core.machine.selection import apply_machin_options, first_machin, resolve_machine
 from gecent.core.macros.dialect import choose_dialect, read_in_dialect, read_raw
 from gecent.core.motion.guard import DEFAULT_MAX_SEGMENTS
 from gecent.core.multihead.first_pass import combined_program
@@ -39,11 +39,20 @@ def post(
     spoken = choose_dialect(path, plugins, dialect)
     request, notes = first_machin(read_raw(path, plugins, spoken))
     machine = resolve_machine(plugins, machine_override, request)
+    # the outputs are laid out for the machine as the first MACHIN leaves it: its OPTAB
+    # pairs choose the printout and its print positions (164, 17, 79, 160), as the
+    # manual's GEOUT4 sample does (001 L10011); the run applies them again at MACHIN
+    layout = machine
+    if request is not None:
+        try:
+            layout = apply_machin_options(machine, request)[0]
+        except GecentError:
+            layout = machine  # (the run reports the bad pair at its MACHIN)
     if len(machine.heads) > 1 and combined_program(read_raw(path, plugins, spoken)):
         from gecent.core.multihead.post import post_multihead
 
-        outputs = sinks(machine) if sinks is not None else None
-        for note in notes:
+        outputs = sinks(layout) if sinks is not None else None
+        for note in [*notes, *(outputs.notes if outputs is not None else [])]:
             if report is not None:
                 report(note)
         records = read_in_dialect(
@@ -55,7 +64,7 @@ def post(
     run = Run(
         machine,
         plugins,
-        sinks(machine) if sinks is not None else None,
+        sinks(layout) if sinks is not None else None,
         report,
         max_segments,
         fast,

@@ -330,7 +330,7 @@ class GMOUT:
     # -- helpers ----------------------------------------------------------------------
 
     def _emit(self, block: Block) -> None:
-        if block.code in (Code.INFORMATION, Code.RESET):
+        if block.code is Code.RESET:
             return
         for part in block.halves or (block,):
             head = part.head or 1

@@ -53,6 +53,7 @@ def post_multihead(
     ending = Ending(False)  # the outputs are kept only when both passes finish
     try:
         head_result = first.process(records)
+        sinks.partno = first.runs[0].sinks.partno  # the listing's page heading
         # (the machine as the program left it: MACHIN may have changed options)
         merge = MergePass(first.runs[0].machine, first.tapes, sinks, warn)
         merge.run()

@@ -96,7 +96,8 @@ class Geout2Pages:
         if code in TEXT_CODES or code is Code.LEADER:
             return self.pages.add_line(block.text or "", tally.cut, tally.dwell)
         sequence = None
-        if any(location == 1 for location, _ in block.words):  # numbered on the tape
+        if block.punched and code is not Code.TMARK:  # (TMARK's code is where its N is)
+            # every tape block is numbered, whatever the tape's N (option 143, SEQNO)
             self.count += 1
             sequence = data.sequence_text(self.count)
         lines = [_tagged("INC", data.incremental(block, sequence))]

@@ -79,11 +79,17 @@ def format_width(registers: RegisterSet, location: int) -> int:
     return (1 if fmt.signed else 0) + fmt.left + point + fmt.right
 
 
-def absolute_width(registers: RegisterSet, location: int) -> int:
-    """An axis widened for its absolute values: sign, 4 integer digits, point, decimals."""
+def absolute_digits(machine: MachineDefinition) -> int:
+    """The integer digits of the widened absolute columns: 4 (inches), one more on a
+    metric machine ("a similar expansion is also made" for metric, 001 L8960-8962)."""
+    return ABSOLUTE_DIGITS + (1 if machine.number_option(138) == 1 else 0)
+
+
+def absolute_width(registers: RegisterSet, location: int, digits: int = ABSOLUTE_DIGITS) -> int:
+    """An axis widened for its absolute values: sign, integer digits, point, decimals."""
     fmt = registers.formats[location]
     assert fmt is not None
-    return 2 + ABSOLUTE_DIGITS + fmt.right
+    return 2 + digits + fmt.right
 
 
 def needed(wanted: Sequence[Column], first: int = FIRST_COLUMN) -> int:
@@ -123,11 +129,14 @@ def absolute_text(value: float, decimals: int) -> str:
     return f"{round(value, decimals) + 0.0:+.{decimals}f}"  # + 0.0: no "-0.0000"
 
 
-def expanded_text(value: float, decimals: int) -> str:
-    """An absolute value in its widened format, 4 integer digits with their leading zeros,
-    as W9 prints them (0892.3456, 1088.1366; 001 L8945-8960), with its sign."""
-    width = 2 + ABSOLUTE_DIGITS + decimals
-    return f"{round(value, decimals) + 0.0:+0{width}.{decimals}f}"
+def expanded_text(value: float, decimals: int, digits: int = ABSOLUTE_DIGITS) -> str:
+    """An absolute value in its widened format, its integer digits with their leading
+    zeros, as W9 prints them (0892.3456, 1088.1366; 001 L8945-8960), with its sign; a value
+    too large for the field is stars, as a FORTRAN format prints it, never a wider field
+    running into its neighbour."""
+    width = 2 + digits + decimals
+    text = f"{round(value, decimals) + 0.0:+0{width}.{decimals}f}"
+    return text if len(text) <= width else "*" * width
 
 
 def feed_text(ipm: float) -> str:
@@ -175,15 +184,25 @@ class Tally:
         self.frames = 0
         self.cut = self.dwell = 0.0
         self.origin = (0.0, 0.0, 0.0)
+        # a multihead program's ORIGIN is each head's own (OPRVAL, OPRVL2; 001 L9812-9882)
+        self.origins: dict[int, tuple[float, float, float]] = {}
 
     def count(self, block: Block, line: str | None) -> None:
         if line is not None:
             self.frames += line_frames(line, self.leader)
         if block.code is Code.INFORMATION and block.cells[2] == 2.0:
             x, y, z = (block.cells[k] for k in (3, 4, 5))
-            self.origin = (float(x), float(y), float(z))  # type: ignore[arg-type]
+            origin = (float(x), float(y), float(z))  # type: ignore[arg-type]
+            if block.head:
+                self.origins[block.head] = origin
+            else:
+                self.origin = origin
         self.cut += block.cut_minutes
         self.dwell += block.dwell_minutes
+
+    def origin_of(self, head: int) -> tuple[float, float, float]:
+        """The ORIGIN a head's operator values are taken from."""
+        return self.origins.get(head, self.origin)
 
     @property
     def tape_feet(self) -> int:

@@ -37,6 +37,7 @@ from gecent.plugins.printouts.layout import (
     ROTARY_CELLS,
     SPEED_WIDTH,
     Column,
+    absolute_digits,
     absolute_width,
     axis_sources,
     does_not_fit,
@@ -60,29 +61,37 @@ def data_columns(
     name: str,
     first: int = FIRST_COLUMN,
     records: bool = False,
+    heads: Sequence[RegisterSet] = (),
 ) -> list[Column]:
     """The columns of one head's lines from column ``first``, spread over the option-160
     print positions; ``records``: the N column holds CL record numbers too (GEOUT2's
-    Absolute line). A line that does not fit is an error naming option 160."""
+    Absolute line). ``heads``: every head's registers, when the heads' lines share one
+    grid (GEOUT3: a register under the same register of the other head, as W17 prints
+    them, 001 L9751-9757), each column as wide as the widest head needs and titled with
+    this head's letter. A line that does not fit is an error naming option 160."""
+    every = [registers, *(h for h in heads if h is not registers)]
     order = [k for k in (machine.output_order or range(1, 31)) if k not in NOT_REGISTERS]
     wanted: list[Column] = []
     for location in order:
-        if registers.formats[location] is None:
+        having = [h for h in every if h.formats[location] is not None]
+        if not having:
             continue
-        width = format_width(registers, location)
+        width = max(format_width(h, location) for h in having)
         if location in AXIS_CELLS:
-            width = max(width, absolute_width(registers, location))
+            digits = absolute_digits(machine)
+            width = max(width, *(absolute_width(h, location, digits) for h in having))
         elif location == 11:
             width = max(width, FEED_WIDTH)
         elif location == 12:
             width = max(width, SPEED_WIDTH)
         elif location == 1 and records:
             width = max(width, RECORD_WIDTH)
-        wanted.append(Column(str(location), registers.letters[location], width))
-    if registers.formats[11] is None:
+        letter = registers.letters[location] if registers.formats[location] is not None else ""
+        wanted.append(Column(str(location), letter, width))
+    if all(h.formats[11] is None for h in every):
         metric = machine.number_option(138) == 1
         wanted.append(Column(FEED, "F-MPM" if metric else "F-IPM", FEED_WIDTH))
-    if registers.formats[12] is None:
+    if all(h.formats[12] is None for h in every):
         wanted.append(Column(SPEED, "S-RPM", SPEED_WIDTH))
     if records and registers.formats[1] is None:
         wanted.append(Column(RECORD, "CLREC", RECORD_WIDTH))
@@ -107,6 +116,7 @@ class DataLines:
     ) -> None:
         self.name = name
         self.step = machine.number_option(14)
+        self.digits = absolute_digits(machine)
         self.places = [(column.key, column.end) for column in columns]
         self.first = columns[0].start - 1 if columns else 0  # the first field's index
         keys = {column.key for column in columns}
@@ -174,7 +184,7 @@ class DataLines:
             values = self._axes(block, (0.0, 0.0, 0.0))
         else:
             values = {str(location): text for location, text in block.words}
-            if sequence is not None and "1" in values:
+            if sequence is not None:
                 values["1"] = sequence
         return self._line(block, values)
 
@@ -227,14 +237,14 @@ class DataLines:
         step = self.step
         for cell, decimals in self.decimals.items():
             if cell in self.degrees:
-                values[str(cell)] = expanded_text(self.degrees[cell], decimals)
+                values[str(cell)] = expanded_text(self.degrees[cell], decimals, self.digits)
                 continue
             source = self.sources.get(cell)
             if source is None or point is None:
                 continue
             internal, sign = source
             value = sign * (point[internal] * step - origin[internal])
-            values[str(cell)] = expanded_text(value, decimals)
+            values[str(cell)] = expanded_text(value, decimals, self.digits)
         return values
 
     def _line(self, block: Block, values: dict[str, str]) -> str:

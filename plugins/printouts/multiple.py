@@ -160,9 +160,13 @@ class MultiplePages:
         self.heads: list[DataLines] = []
         self.prefixes: list[str] = []
         headings = []
-        for layout in printout.layouts(machine):
-            first = FIRST_COLUMN + len(layout.prefix)
-            columns = data_columns(machine, layout.registers, name=printout.name, first=first)
+        layouts = printout.layouts(machine)
+        first = FIRST_COLUMN + max(len(layout.prefix) for layout in layouts)
+        every = [layout.registers for layout in layouts]
+        for layout in layouts:
+            columns = data_columns(
+                machine, layout.registers, name=printout.name, first=first, heads=every
+            )
             self.heads.append(DataLines(machine, layout.registers, columns, printout.name))
             self.prefixes.append(layout.prefix)
             headings.append(centred_heading(columns))
@@ -227,7 +231,7 @@ class MultiplePages:
             elif printed.kind == ABSOLUTE:
                 line = data.absolute(part)
             else:
-                line = data.operator(part, self.tally.origin)
+                line = data.operator(part, self.tally.origin_of(part.head))
             prefix = self.prefixes[head]
             lines.append(prefix + line[len(prefix) :])
         return lines
