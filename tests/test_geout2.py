@@ -262,7 +262,7 @@ def test_mach40_posts_a_three_axis_program_with_its_geout2_listing(tmp_path: Pat
 
 
 def test_every_tape_block_is_numbered_whatever_the_tapes_n() -> None:
-    """"A unit increasing number irrespective of the setting of option 143" (001
+    """ "A unit increasing number irrespective of the setting of option 143" (001
     L9628-9633): with SEQNO/OFF the tape has no N, the printout still numbers its blocks."""
     rows = data_lines(listing(["SEQNO/OFF", *W16]))
     numbers = [fields(row)[1] for row in rows if row.startswith("INC") and "FROM" not in row]
