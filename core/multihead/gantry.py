@@ -30,6 +30,10 @@ def merge_common_axis(
     heads = [
         HeadMoves(converter, blocks) for converter, blocks in zip(out.heads, moves, strict=True)
     ]
+    # coordinates on the axis closer than half the tape's smallest value are one: the
+    # pieces of a split are cut on that grid, and a CL file may be finer than it
+    same = max(h.converter.quanta[axis] * h.step for h in heads) / 2.0
+    one_register = machine.number_option(139) == 0
     out.summed = None  # heads cutting alone keep the other waiting: the times add up
     streams = [heads[0].moves(), heads[1].moves()]
     pending: list[Move | None] = [next(streams[0], None), next(streams[1], None)]
@@ -46,7 +50,7 @@ def merge_common_axis(
             continue
         s1, s2 = heads[0].start(move_1, axis), heads[1].start(move_2, axis)
         e1, e2 = s1 + move_1.departures[axis], s2 + move_2.departures[axis]
-        step = common_axis_step(s1, e1, s2, e2)
+        step = common_axis_step(s1, e1, s2, e2, same)
         if step.rule is AxisRule.SEPARATE:
             for index in (0, 1):
                 _alone(out, heads[index], pending[index])
@@ -57,7 +61,7 @@ def merge_common_axis(
             move = pending[index]
             assert move is not None
             rest = None
-            if step.at is not None and 0.0 < step.fraction < 1.0:
+            if step.at is not None and _worth_splitting(move, step.fraction, axis, same):
                 move, rest = split_move(move, step.fraction)
             _alone(out, heads[index], move)
             pending[index] = rest if rest is not None else next(streams[index], None)
@@ -66,9 +70,13 @@ def merge_common_axis(
         rests: list[Move | None] = [None, None]
         if step.rule is AxisRule.SEGMENT:
             index = (step.head or 1) - 1
-            pieces[index], rests[index] = split_move(pieces[index], step.fraction)
+            if _worth_splitting(pieces[index], step.fraction, axis, same):
+                pieces[index], rests[index] = split_move(pieces[index], step.fraction)
         if _feeds_agree(pieces[0], pieces[1], axis, tolerance):
-            _together(out, heads, pieces)
+            # one feedrate register: the block takes the longer head's time, its F, and
+            # the quicker head is slowed to it (as Rule 2 slows, 001 L7570-7596)
+            longer = 1 if pieces[0].time >= pieces[1].time else 2
+            _together(out, heads, pieces, longer if one_register else None)
         else:  # FXTOL: out of tolerance, each head cuts its piece alone
             for index in (0, 1):
                 _alone(out, heads[index], pieces[index])
@@ -98,10 +106,16 @@ def _feeds_agree(first: Move, second: Move, axis: int, tolerance: float) -> bool
     )
 
 
-def _together(out: GMOUT, heads: list[HeadMoves], pieces: list[Move]) -> None:
+def _worth_splitting(move: Move, fraction: float, axis: int, same: float) -> bool:
+    """A split leaves two pieces each at least a grid step long on the axis."""
+    along = abs(move.departures[axis])
+    return same < fraction * along < along - same
+
+
+def _together(out: GMOUT, heads: list[HeadMoves], pieces: list[Move], primary: int | None) -> None:
     first, second = heads[0].block(pieces[0]), heads[1].block(pieces[1])
     if first is not None and second is not None:
-        out.combined(first, second)
+        out.combined(first, second, primary)
         return
     for block in (first, second):
         if block is not None:

@@ -16,8 +16,9 @@ from __future__ import annotations
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 
-from gecent.core.errors import Diagnostic, NotYetSupported
+from gecent.core.errors import Diagnostic, InputError, NotYetSupported, SourcePosition
 from gecent.core.machine.definition import MachineDefinition
+from gecent.core.motion.linear import TWO_AXIS
 from gecent.core.multihead.dump import ScratchTape
 from gecent.core.multihead.equal_time import merge_equal_times
 from gecent.core.multihead.gantry import merge_common_axis
@@ -94,6 +95,12 @@ class MergePass:
         if common not in (0, 1, 2, 3):
             raise NotYetSupported(f"a common axis of the heads given as option 155 = {common}")
         self.common_axis = common - 1 if common else None
+        if self.common_axis == 2 and machine.number_option(22) in TWO_AXIS:
+            raise InputError(
+                "option 155 = 3 makes Z the heads' common axis, but the machine has two axes "
+                "(option 22)",
+                SourcePosition(machine.origin),
+            )
         self.machine = machine
         self.tapes = [HeadTape(tape.head, tape.read()) for tape in tapes]
         self.out = GMOUT(machine, sinks, warn)
@@ -101,6 +108,8 @@ class MergePass:
 
     def run(self) -> None:
         tapes = self.tapes
+        if self.common_axis is not None:
+            self._prelude()
         current = tapes[0]
         while not all(t.done for t in tapes):
             other = tapes[2 - current.head]
@@ -137,6 +146,24 @@ class MergePass:
             current = current if current.waiting_op < other.waiting_op else other
             current.waiting_op = None
         self.out.finish([t.fini for t in tapes])
+
+    def _prelude(self) -> None:
+        """On a common axis every move of one head moves the other: both heads' FROM and
+        SAFETY are read before the first move goes out (each tape up to its first move or
+        OP block), so that the axis knows where both heads stand."""
+        for tape in self.tapes:
+            while True:
+                block = tape.next()
+                if block is None:
+                    break
+                if block.code is Code.MULTIHEAD_1 and self._information(block):
+                    continue
+                if block.code is Code.MULTIHEAD_1 or (
+                    block.steps is not None and block.code is not Code.FROM
+                ):
+                    tape.put_back(block)
+                    break
+                self.out.alone(block)
 
     def _information(self, block: Block) -> bool:
         """SAFETY, SFM and PRFSEQ blocks set their conditions; False for an OP block."""
@@ -226,7 +253,9 @@ class MergePass:
         record = next((b.record for b in pending if b is not None), None)
         out.parking.park(parked, record)
         for head in (keep, parked):
-            if head == parked:
+            if head == parked and self.common_axis is None:
+                # (on a common axis the head comes back by the axis first, before its
+                # next move: GMOUT's parking returns it there)
                 out.parking.unpark(parked, record)
             block = pending[head - 1]
             if block is not None:

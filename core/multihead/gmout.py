@@ -278,11 +278,12 @@ class GMOUT:
         self.heads[head - 1].convert(block)
         self._emit(block)
 
-    def combined(self, first: Block, second: Block) -> None:
-        """GMOUT(IH = 3 or 4): both heads' blocks in one tape block."""
+    def combined(self, first: Block, second: Block, primary: int | None = None) -> None:
+        """GMOUT(IH = 3 or 4): both heads' blocks in one tape block; ``primary``: the head
+        whose feed command the block carries (else the preferred head's)."""
         self.parking.before_combined(first, second)
         cut, dwell = self._account_pair(first, second)
-        primary = self.preferred
+        primary = primary or self.preferred
         circle_first, circle_second = (b.code in CIRCLE_CODES for b in (first, second))
         if circle_first != circle_second:
             primary = 1 if circle_first else 2  # the sign points at the circular head

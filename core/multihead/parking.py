@@ -29,6 +29,9 @@ class HeadOutput(Protocol):
     @property
     def step(self) -> float: ...
 
+    @property
+    def quanta(self) -> list[int]: ...
+
     def rapid_move(
         self, departures: tuple[float, ...], at: tuple[int, ...], record: int | None
     ) -> tuple[list[Block], Block, list[Block]]: ...
@@ -60,6 +63,8 @@ class Parking:
         option = int(out.machine.number_option(155))
         self.axis: int | None = option - 1 if option in (1, 2, 3) else None
         self.making = 0  # > 0 while parking or returning moves are made (no nesting)
+        # each head's last point of its own program (steps): where it cuts on from
+        self.cl_points: dict[int, tuple[int, ...] | None] = {1: None, 2: None}
         self.dragged_warned = {1: False, 2: False}
 
     def safety_given(self, head: int, departures: tuple[float, ...]) -> None:
@@ -127,13 +132,15 @@ class Parking:
     # -- the common axis ------------------------------------------------------------
 
     def placed(self, head: int, block: Block) -> None:
-        """A head's FROM: on a common axis both heads' FROMs name the one coordinate of the
-        axis; two that differ leave the axis to move between them, with a diagnostic."""
+        """A head's FROM. On a common axis both heads' FROMs name the one coordinate of the
+        axis: the later one is where the axis stands, for both heads (a FROM that differs
+        is warned about; the other head returns to its own point before it cuts)."""
         positions = self.out.positions
         assert block.position is not None
         positions[head] = block.position
-        other = positions[3 - head]
+        self.cl_points[head] = block.position
         axis = self.axis
+        other = positions[3 - head]
         if axis is None or other is None or axis >= len(other):
             return
         if other[axis] != block.position[axis]:
@@ -144,64 +151,93 @@ class Parking:
                     None,
                 )
             )
+            self._drag(3 - head, block.position[axis])
 
     def moved(self, head: int, block: Block) -> None:
-        """A head's move went out: where it stands, and on a common axis where the other
-        head now stands too."""
-        positions = self.out.positions
+        """A head's move went out: where it stands (and, for a move of its program, the CL
+        point it has reached), and on a common axis where the other head now stands."""
         assert block.position is not None
-        positions[head] = block.position
+        self.out.positions[head] = block.position
+        if not self.making:
+            self.cl_points[head] = block.position
         axis = self.axis
-        other = positions[3 - head]
-        if axis is None or other is None or axis >= len(other) or block.steps is None:
-            return
-        if other[axis] != block.position[axis]:
-            changed = list(other)
-            changed[axis] = block.position[axis]
-            positions[3 - head] = tuple(changed)
+        if axis is not None and axis < len(block.position):
+            self._drag(3 - head, block.position[axis])
+
+    def _drag(self, head: int, coordinate: int) -> None:
+        positions = self.out.positions
+        at = positions[head]
+        if at is not None and self.axis is not None and at[self.axis] != coordinate:
+            changed = list(at)
+            changed[self.axis] = coordinate
+            positions[head] = tuple(changed)
 
     def before_alone(self, block: Block) -> None:
         """On a common axis: a head's move starts from its own point (a return first when
         the axis has moved it, or it is parked), and the other head is parked before this
-        one moves along the axis."""
-        if self.axis is None or self.making or block.steps is None or block.position is None:
-            return
-        if block.code is Code.FROM:
+        one moves along the axis; a dwell is made where the head's program left it."""
+        if self.axis is None or self.making or block.code is Code.FROM:
             return
         head = block.head or 1
-        self._to_start(head, _start(block), block.record)
-        if block.steps[self.axis] != 0:
+        if block.steps is None or block.position is None:
+            if block.code is Code.DWELL and self.cl_points[head] is not None:
+                self._to_start(head, self.cl_points[head], block.record)  # type: ignore[arg-type]
+            return
+        start = _start(block)
+        at = self.out.positions[head]
+        quantum = self.out.head_outputs[head - 1].quanta[self.axis]
+        if block.steps[self.axis] != 0 or (
+            at is not None and abs(at[self.axis] - start[self.axis]) >= quantum
+        ):
             self._clear_way(3 - head, block.record)
+        self._to_start(head, start, block.record)
 
     def before_combined(self, first: Block, second: Block) -> None:
         """On a common axis: both heads at their own points before they cut together."""
         if self.axis is None or self.making:
             return
-        for block in (first, second):
-            if block.steps is not None and block.position is not None:
-                self._to_start(block.head or 1, _start(block), block.record)
+        for _ in range(2):  # (a return along the axis parks the other head: once more)
+            for block in (first, second):
+                if block.steps is not None and block.position is not None:
+                    self._to_start(block.head or 1, _start(block), block.record)
 
     def _to_start(self, head: int, start: tuple[int, ...], record: int | None) -> None:
-        """RETHD/DRETHD: the head back to ``start``; the other parked first when the way
-        back moves the common axis."""
+        """RETHD/DRETHD: the head back to ``start``: withdrawn first if it is in the work,
+        the other head parked first when the way back moves the common axis, along the
+        axis at the parked level, then into the work by its SAFETY (001 L7980-7990)."""
         out = self.out
         at = out.positions[head]
-        if at is None or (not self.parked[head] and at == start):
+        quanta = out.head_outputs[head - 1].quanta
+        if at is None or (not self.parked[head] and _near(at, start, quanta)):
             return
-        assert self.axis is not None
-        departures = [s - a for s, a in zip(start, at, strict=False)]
-        if self.axis < len(departures) and departures[self.axis] != 0:
+        axis = self.axis
+        assert axis is not None
+        if axis < len(at) and abs(at[axis] - start[axis]) >= quanta[axis]:
             self._clear_way(3 - head, record)
-            at = out.positions[head]
-            assert at is not None
-            departures = [s - a for s, a in zip(start, at, strict=False)]
+        if not self.parked[head] and self.safety[head] is not None:
+            self.park(head, record)  # (a head in the work leaves it before it moves away)
+        at = out.positions[head]
+        assert at is not None
+        step = out.head_outputs[head - 1].step
+        safety = self.safety[head]
+        steps = [round(d / step) for d in safety] if safety is not None else []
+        parked_at = list(start)
+        if self.parked[head] and steps:
+            for index, count in enumerate(steps[: len(parked_at)]):
+                parked_at[index] += count
         if self.parked[head]:
             self.parked[head] = False
             out.text(f"HEAD {head} RETURNED TO THE WORK", record)
-        step = out.head_outputs[head - 1].step
         self.making += 1
         try:
-            self._rapid(head, tuple(d * step for d in departures), record)
+            over = [p - a for p, a in zip(parked_at, at, strict=False)]
+            if any(over):
+                self._rapid(head, tuple(d * step for d in over), record)
+            at = out.positions[head]
+            assert at is not None
+            down = [s - a for s, a in zip(start, at, strict=False)]
+            if any(down):
+                self._rapid(head, tuple(d * step for d in down), record)
         finally:
             self.making -= 1
 
@@ -222,6 +258,11 @@ class Parking:
                 )
             return
         self.park(head, record)
+
+
+def _near(at: tuple[int, ...], point: tuple[int, ...], quanta: list[int]) -> bool:
+    """Within the tape's smallest value of ``point`` on every axis: no move to make."""
+    return all(abs(a - p) < q for a, p, q in zip(at, point, quanta, strict=False))
 
 
 def _start(block: Block) -> tuple[int, ...]:
