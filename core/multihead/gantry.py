@@ -13,12 +13,13 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
+from gecent.core.absent import ABSENT
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.multihead.common_axis import AxisRule, common_axis_step, component_feeds_agree
 from gecent.core.multihead.equal_time import HeadMoves
 from gecent.core.multihead.gmout import GMOUT
 from gecent.core.multihead.split import Move, split_move
-from gecent.core.output.block import Block
+from gecent.core.output.block import Block, Code
 
 
 def merge_common_axis(
@@ -76,7 +77,7 @@ def merge_common_axis(
             # one feedrate register: the block takes the longer head's time, its F, and
             # the quicker head is slowed to it (as Rule 2 slows, 001 L7570-7596)
             longer = 1 if pieces[0].time >= pieces[1].time else 2
-            _together(out, heads, pieces, longer if one_register else None)
+            _together(out, heads, pieces, longer if one_register else None, axis)
         else:  # FXTOL: out of tolerance, each head cuts its piece alone
             for index in (0, 1):
                 _alone(out, heads[index], pieces[index])
@@ -112,14 +113,45 @@ def _worth_splitting(move: Move, fraction: float, axis: int, same: float) -> boo
     return same < fraction * along < along - same
 
 
-def _together(out: GMOUT, heads: list[HeadMoves], pieces: list[Move], primary: int | None) -> None:
+def _together(
+    out: GMOUT, heads: list[HeadMoves], pieces: list[Move], primary: int | None, axis: int
+) -> None:
     first, second = heads[0].block(pieces[0]), heads[1].block(pieces[1])
     if first is not None and second is not None:
+        _one_axis_move(first, second, heads[1], axis)
         out.combined(first, second, primary)
         return
     for block in (first, second):
         if block is not None:
             out.alone(block)
+
+
+def _one_axis_move(first: Block, second: Block, head: HeadMoves, axis: int) -> None:
+    """The combined block moves the axis once: head 2's departure along it made head
+    1's where rounding has made them differ (CL values finer than the tape would
+    otherwise print one word a digit apart from the other)."""
+    assert first.steps is not None and second.steps is not None
+    if axis >= len(first.steps) or axis >= len(second.steps):
+        return
+    quantum = head.converter.quanta[axis]
+    if round(first.steps[axis] / quantum) == round(second.steps[axis] / quantum):
+        return  # (one word on the tape already)
+    difference = first.steps[axis] - second.steps[axis]
+    # (the pair was made on coordinates equal to half a grid step at each end, each
+    # piece cut on the grid: the departures differ by two grid steps at most)
+    if abs(difference) > 2 * quantum:
+        return
+    steps = list(second.steps)
+    steps[axis] = first.steps[axis]
+    second.steps = tuple(steps)
+    second.cells[3 + axis] = steps[axis] * head.step
+    if second.position is not None:
+        position = list(second.position)
+        position[axis] += difference
+        second.position = tuple(position)
+    ipm = second.cells[19]
+    if ipm is not ABSENT and float(ipm) > 0 and second.code is Code.LINEAR:
+        head.converter.refinish(second, float(ipm))
 
 
 def _alone(out: GMOUT, head: HeadMoves, move: Move | None) -> None:
