@@ -267,3 +267,27 @@ def test_every_tape_block_is_numbered_whatever_the_tapes_n() -> None:
     rows = data_lines(listing(["SEQNO/OFF", *W16]))
     numbers = [fields(row)[1] for row in rows if row.startswith("INC") and "FROM" not in row]
     assert numbers == ["001", "002", "003", "004", "005"]
+
+
+def test_w8_print_vectors() -> None:
+    """Spec 04 W8 (001 L8880-8889): N (REGFOR 30.), G (20.), X and Y (-24.) laid out two
+    blanks apart from column 3: N 3-5, G 8-9, X 12-19, Y 22-29; X and Y signed, 2 + 4
+    digits with the point (NPT -6, NPR -104): 8 columns. The layout of every printout
+    (CALCPn) spreads the spare print positions equally, so 28 positions give W8's spacing."""
+    from dataclasses import replace
+
+    from gecent.core.machine.regformat import decode_regfor
+    from gecent.plugins.printouts.layout import Column, format_width, spread
+
+    machine = standard_machine()
+    registers = machine.registers
+    formats = list(registers.formats)
+    for location, regfor in ((1, 30.0), (2, 20.0), (3, -24.0), (4, -24.0)):
+        formats[location] = decode_regfor(regfor)
+    registers = replace(registers, formats=tuple(formats))
+    wanted = [
+        Column(str(k), letter, format_width(registers, k))
+        for k, letter in ((1, "N"), (2, "G"), (3, "X"), (4, "Y"))
+    ]
+    placed = spread(wanted, 28)
+    assert [(c.start, c.end) for c in placed] == [(3, 5), (8, 9), (12, 19), (22, 29)]
