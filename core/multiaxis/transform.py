@@ -1,0 +1,99 @@
+"""The transform-class protocol (manual §4.2, 001 L12639-12748; spec 05 §8.1).
+
+APT gives a multiaxis point as the tool tip (x, y, z) and the tool axis (i, j, k), the
+direction cosines pointing back from the tip towards the holder. A machine's class
+(option 116) carries such points to its axes X, Y, Z, A, B, C (the direct transform,
+part to machine) and back (the inverse, machine to part: linearity checks and MAFORK).
+Each class is a plugin of the ``classes`` family, vectorised over a run of points with
+numpy: a point is a row, the columns are x y z i j k (part) or X Y Z A B C (machine),
+angles in radians, the rotary columns a class does not drive 0.0.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Protocol, runtime_checkable
+
+import numpy as np
+from numpy.typing import NDArray
+
+Points = NDArray[np.float64]  # (n, 6)
+
+# machine columns
+X, Y, Z, A, B, C = range(6)
+# part columns
+PX, PY, PZ, PI, PJ, PK = range(6)
+
+
+@dataclass(frozen=True)
+class Kinematics:
+    """The equation constants a class may need (001 L12735-12741): ``reach`` is the
+    distance from the rotary head's axis to the tool tip (R + TL: the head axis to the
+    spindle face, options 102-105 by head and gripper, plus the tool length), and
+    ``options`` options 100-105 of the machine, in order (the Machine Subroutine's
+    constants: head spacing, head offsets, inclined-ram angles...)."""
+
+    reach: float = 0.0
+    options: tuple[float, float, float, float, float, float] = (0.0,) * 6
+
+    def option(self, number: int) -> float:
+        """Option 100..105."""
+        return self.options[number - 100]
+
+
+@dataclass
+class MachinePoints:
+    """A direct transform's answer: the machine axes of each point, and which points are
+    singular (the tool axis where a rotary angle is indeterminate and the previous one is
+    kept: the linearity test is disregarded over such a move, 001 L12845-12870)."""
+
+    axes: Points
+    singular: NDArray[np.bool_] = field(default_factory=lambda: np.zeros(0, dtype=bool))
+
+
+@runtime_checkable
+class TransformClass(Protocol):
+    """A multiaxis transform class (CLASSn, n = option 116)."""
+
+    number: int
+    name: str
+    section: str
+    structure: str  # the axes in the manual's I(P,T,R) notation, e.g. "5(3,0,2)"
+    rotary: tuple[int, ...]  # the machine columns it drives among A, B, C (3, 4, 5)
+
+    def direct(
+        self, part: Points, kinematics: Kinematics, previous: Points | None = None
+    ) -> MachinePoints:
+        """Part (x y z i j k rows) to machine (X Y Z A B C rows). ``previous`` is the
+        machine point before the run (one row), for the angles a singular point keeps."""
+        ...
+
+    def inverse(self, machine: Points, kinematics: Kinematics) -> Points:
+        """Machine (X Y Z A B C rows) to part (x y z i j k rows)."""
+        ...
+
+
+def keep_previous(
+    angle: NDArray[np.float64], singular: NDArray[np.bool_], before: float
+) -> NDArray[np.float64]:
+    """A singular point keeps the angle of the point before it (or ``before`` for the
+    first): a forward fill along the run."""
+    if not singular.any():
+        return angle
+    filled = angle.copy()
+    indices = np.where(singular, -1, np.arange(len(angle)))
+    last = np.maximum.accumulate(indices)
+    taken = last >= 0
+    filled[taken] = angle[last[taken]]
+    filled[~taken] = before
+    return filled
+
+
+def as_points(values: object) -> Points:
+    """One point or a run of them as an (n, 6) float array."""
+    points = np.asarray(values, dtype=np.float64)
+    if points.ndim == 1:
+        points = points.reshape(1, -1)
+    if points.ndim != 2 or points.shape[1] != 6:
+        raise ValueError(f"points are rows of six values, not an array of shape {points.shape}")
+    return points
