@@ -291,3 +291,13 @@ def test_w8_print_vectors() -> None:
     ]
     placed = spread(wanted, 28)
     assert [(c.start, c.end) for c in placed] == [(3, 5), (8, 9), (12, 19), (22, 29)]
+
+
+def test_an_insert_is_an_inc_line() -> None:
+    """Every line of the tape is tagged (001 L9606-9610): an INSERT's text is punched, so
+    it prints as an INC line; PPRINT and comments, not on the tape, stay untagged."""
+    text = listing(["PARTNO I", "INSERT G04X1", "PPRINT A NOTE", "FROM/0,0,0"])
+    lines = text.splitlines()
+    insert = next(line for line in lines if "G04X1" in line)
+    assert insert.startswith("INC") and insert.split() == ["INC", "G04X1"]
+    assert "A NOTE" in lines

@@ -266,3 +266,15 @@ def test_mill_mach23_with_geout4_from_the_command_line(tmp_path: Path) -> None:
     warning = "REQUESTED MISCELLANEOUS FUNCTION CODE IS NOT AVAILABLE ON THIS MACHINE"
     assert [warning in found[kind] for kind in found] == [True, False, False]
     assert tape.read_text().splitlines()[1] == "N009G04M03"
+
+
+def test_option_143_unit_numbers_with_option_17_digit_2_is_warned() -> None:
+    """Option 143's table: "+1 = unit increasing (option 17 must not be 2)" (001
+    L26079-26090)."""
+    from gecent.core.machine.loader import standard_machine
+    from gecent.core.machine.rules import check_definition
+
+    warned = check_definition(standard_machine().with_options({143: 1.0, 17: 212.0}))[1]
+    assert any("option 17 must not have a digit 2" in w for w in warned)
+    quiet = check_definition(standard_machine().with_options({143: 1.0, 17: 111.0}))[1]
+    assert not any("option 17" in w for w in quiet)

@@ -307,4 +307,13 @@ def check_definition(machine: MachineDefinition) -> tuple[list[Problem], list[st
     warnings += [
         f"[{table}] entry {entry}: {text}" for table, entry, text in _departure_capacity(machine)
     ]
+    printouts = machine.options[17]
+    if machine.options[143] == 1.0 and isinstance(printouts, float) and "2" in f"{printouts:g}":
+        # option 143's own table: "+1 = unit increasing (option 17 must not be 2)"
+        # (001 L26079-26090): a segmented departure's middle blocks would be numbered and
+        # then left out of the printout
+        warnings.append(
+            f"option 143 = 1 (unit-increasing numbers) with option 17 = {printouts:g}: "
+            "option 17 must not have a digit 2"
+        )
     return errors, warnings

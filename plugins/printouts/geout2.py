@@ -94,7 +94,10 @@ class Geout2Pages:
             return ""
         code = block.code
         if code in TEXT_CODES or code is Code.LEADER:
-            return self.pages.add_line(block.text or "", tally.cut, tally.dwell)
+            text = block.text or ""
+            if code is Code.INSERT:  # tape data: an INC line, as every line of the tape
+                text = "INC".ljust(data.first) + text
+            return self.pages.add_line(text, tally.cut, tally.dwell)
         sequence = None
         if block.punched and code is not Code.TMARK:  # (TMARK's code is where its N is)
             # every tape block is numbered, whatever the tape's N (option 143, SEQNO)
