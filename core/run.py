@@ -54,6 +54,7 @@ from gecent.core.motion.guard import (
     check_segments,
 )
 from gecent.core.motion.linear import LinearMotion, godlta_delta, path_length
+from gecent.core.motion.multiaxis import MultiaxisMotion
 from gecent.core.motion.positioning import PositioningMotion
 from gecent.core.motion.rotary import RotaryElement
 from gecent.core.motion.thread import ThreadElement
@@ -86,8 +87,10 @@ class Run(Elements):
         fast: bool = True,
     ) -> None:
         self.plugins = plugins
-        self.fast_allowed = fast  # False: every record by the general path (tests)
-        self.use_fast_path = fast
+        # False: every record by the general path (tests; a multiaxis machine's points
+        # go through its transform class)
+        self.fast_allowed = fast and machine.number_option(116) == 0
+        self.use_fast_path = self.fast_allowed
         self._fast: FastLinear | None = None
         self.result = RunResult(machine=machine)
         if sinks is None:  # no outputs named: keep the blocks for the caller
@@ -104,6 +107,7 @@ class Run(Elements):
         self.units = UnitScale(machine)
         self._output: OutputElement | None = None
         self._motion: LinearMotion | None = None
+        self._multiaxis: MultiaxisMotion | None = None
         self._circle: CircularMotion | None = None
         self._rapid_traverse: RapidTraverse | None = None
         self._spindle: SpindleElement | None = None
@@ -312,6 +316,11 @@ class Run(Elements):
         elif isinstance(record, Arelem):
             self.state.tolerances.take(record.subtype, record.values)
         elif isinstance(record, Circle):
+            if self.machine.number_option(116) != 0:
+                raise NotYetSupported(
+                    "circular interpolation on a multiaxis machine (manual §3.4.7.1)",
+                    record.where,
+                )
             self.circle.surface(record)  # ignored on a linear-only control (option 9 = 0)
         elif isinstance(record, Fini):
             if self.macros is not None:
@@ -324,9 +333,7 @@ class Run(Elements):
         elif isinstance(record, Comment | PartText | Surface | Other):
             return
         elif isinstance(record, Multiax):
-            if self.machine.number_option(116) != 0:
-                raise NotYetSupported("MULTAX on a multiaxis machine", record.where)
-            return  # each point's tool axis is checked with its motion
+            return  # each point's tool axis goes with its motion (or is checked with it)
         else:
             kind = type(record).__name__.upper()
             raise NotYetSupported(
@@ -369,7 +376,8 @@ class Run(Elements):
         if control not in (0.0, 1.0, 2.0, -1.0):  # 3: the 7500's mixed control
             raise NotYetSupported(f"motion with option 1 = {control:g}", record.where)
         positioning = control != 0
-        if len(record.points[0]) == 6:
+        multiaxis = self.machine.number_option(116) != 0
+        if len(record.points[0]) == 6 and not multiaxis:
             record = three_axis_motion(record, self.machine)  # (or an error naming the line)
         modes = self.state.modes
         if modes.ended:
@@ -378,6 +386,8 @@ class Run(Elements):
                 self.warn(Diagnostic(AFTER_END, record.where))
         if modes.stopped and record.subtype is not MotionSubtype.FROM:
             restat(self, record.number)
+        if multiaxis and record.subtype is not MotionSubtype.FROM:
+            self._multiaxis_special(record, positioning)
         if positioning:
             if self.state.threading.armed:
                 raise NotYetSupported("THREAD on a positioning machine", record.where)
@@ -399,9 +409,23 @@ class Run(Elements):
             feed = self.state.feed
             if feed.rapid_requested or feed.rapid_mode:
                 self.rapid.motion(path_length(self.state.position, record))
+        if multiaxis:
+            self.multiaxis.record(record)
+            return
         if self.circle.begin(record):
             return
         self.motion.record(record)
+
+    def _multiaxis_special(self, record: Motion, positioning: bool) -> None:
+        """What a multiaxis machine's motion does not do yet stops the run naming it."""
+        if positioning:
+            raise NotYetSupported("multiaxis motion on a positioning machine", record.where)
+        if self.cycle is not None:
+            raise NotYetSupported("a canned cycle on a multiaxis machine", record.where)
+        if self.state.threading.armed:
+            raise NotYetSupported("THREAD on a multiaxis machine", record.where)
+        if self.state.sfm.active:
+            raise NotYetSupported("SFM on a multiaxis machine", record.where)
 
     def _cycle_points(self, record: Motion) -> None:
         """Each point of a record under CYCLE is a hole: its moves go through the rapid and

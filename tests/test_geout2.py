@@ -237,24 +237,27 @@ def test_mill_mach23_with_geout2_from_the_command_line(tmp_path: Path) -> None:
 
 
 def test_mach40_posts_a_three_axis_program_with_its_geout2_listing(tmp_path: Path) -> None:
-    """MACH40 (option 164 = 2, 001 L27972)."""
+    """MACH40 (option 164 = 2, 001 L27972) is a class 1 machine (option 116): its points go
+    through the class even with the tool along Z (k = 1: C stays 0, A = 90 degrees), so
+    part x is machine Y, part y machine -X, and Z is raised by R = option 104 = 4 in
+    (core/motion/multiaxis.py); the listing's ABS line has A and C in degrees."""
     source = tmp_path / "t40.apt"
     program = ["PARTNO T", "MACHIN/GECENT,40", "FROM/0,0,5", "FEDRAT/10", "SPINDL/500"]
     source.write_text("\n".join([*program, "GOTO/1,1,0", "GOTO/2,1,0", "FINI"]) + "\n")
     code, err, tape, lis = cli(tmp_path, source)
     assert code == 0, err
-    assert tape.read_text().splitlines()[-1] == "N007X+1F01000"
+    assert tape.read_text().splitlines()[-2:] == ["N006G01X-1Y+1Z-5F00192", "N007Y+1F01000"]
     rows = [fields(row) for row in data_lines(lis.read_text())]
     assert rows[-3:] == [
         ["INC", "003", "+1.", "010.00"],
-        ["ABS", "7", "+0002.0000", "+0001.0000", "+0000.0000", "+0000.0000", "+0000.0000", "10."],
+        ["ABS", "7", "-0001.0000", "+0002.0000", "+0004.0000", "+0090.0000", "+0000.0000", "10."],
         [
             "OPR",
             "003",
+            "-0001.0000",
             "+0002.0000",
-            "+0001.0000",
-            "+0000.0000",
-            "+0000.0000",
+            "+0004.0000",
+            "+0090.0000",
             "+0000.0000",
             "010.00",
         ],

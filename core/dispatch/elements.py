@@ -17,6 +17,7 @@ from gecent.core.motion.control_cycles import ControlCycles
 from gecent.core.motion.fastpath import FastLinear
 from gecent.core.motion.guard import CoordinateGuard
 from gecent.core.motion.linear import LinearMotion
+from gecent.core.motion.multiaxis import MultiaxisMotion
 from gecent.core.motion.positioning import PositioningMotion
 from gecent.core.motion.rotary import RotaryElement
 from gecent.core.motion.thread import ThreadElement
@@ -43,6 +44,7 @@ class Elements:
     warn: Callable[[Diagnostic], None]
     _output: OutputElement | None
     _motion: LinearMotion | None
+    _multiaxis: MultiaxisMotion | None
     _circle: CircularMotion | None
     _rapid_traverse: RapidTraverse | None
     _spindle: SpindleElement | None
@@ -99,6 +101,17 @@ class Elements:
         return self._motion
 
     @property
+    def multiaxis(self) -> MultiaxisMotion:
+        """GOLINE on a multiaxis machine, through its transform class (option 116)."""
+        if self._multiaxis is None:
+            number = int(self.machine.number_option(116))
+            transform = (self.plugins or get_plugins()).get("classes", number)
+            if transform is None:
+                raise NotYetSupported(f"transform class {number} (option 116 = {number})")
+            self._multiaxis = MultiaxisMotion(self.state, self.output.output, transform, self.warn)
+        return self._multiaxis
+
+    @property
     def circle(self) -> CircularMotion:
         if self._circle is None:
             self._circle = CircularMotion(self.state, self.output.output, self.warn)
@@ -147,7 +160,7 @@ class Elements:
         self._macfun_check(machine)
         self.result.machine = self.state.machine = machine
         previous = self._output
-        self._output = self._motion = self._circle = None
+        self._output = self._motion = self._circle = self._multiaxis = None
         self._rapid_traverse = self._spindle = self._tool_element = self._rotary = None
         self._guard = None
         self._fast = None

@@ -75,7 +75,7 @@ class Block:
     position: tuple[int, ...] | None = None
     steps: tuple[int, ...] | None = None
     radius: float | None = None  # CIRRAD of a circular block
-    feed_length: float = 0.0  # a cycle block's travel at feed (cutting time)
+    feed_length: float = 0.0  # a cycle block's travel at feed; a multiaxis move's part path
     sweep: float | None = None  # the angle a whole-arc block turns (radians, option 253)
     rapid: bool = False
     rotary: tuple[int, float] | None = None  # a rotary block's cell and travel in degrees

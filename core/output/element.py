@@ -338,7 +338,9 @@ class OutputElement:
             length = sum(o * o for o in offsets) ** 0.5 if offsets else block.radius
         else:
             code = self.linear_codes.select(max(abs(s) for s in block.steps))
-            length = sum((s * self.step) ** 2 for s in block.steps) ** 0.5
+            # a multiaxis move's feed goes by its path in part coordinates (E2, 001
+            # L10985-11038), given with the block
+            length = block.feed_length or sum((s * self.step) ** 2 for s in block.steps) ** 0.5
         block.cells[2] = float(code.code)
         if self.slide_limits.limits:
             assert block.position is not None

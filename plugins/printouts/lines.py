@@ -135,6 +135,7 @@ class DataLines:
         sign = -1.0 if machine.number_option(120) == -1 else 1.0
         scale = 1.0 if machine.number_option(117) >= 0 else -1.0
         self.degrees_per_unit = sign * scale / per_degree
+        self.per_degree = per_degree
         self.point: tuple[int, ...] | None = None  # the machine point (steps), once known
         self.degrees = dict.fromkeys(ROTARY_CELLS, 0.0)
         fmt = registers.formats[1]
@@ -161,6 +162,15 @@ class DataLines:
             if cell in self.degrees and value is not ABSENT:
                 turned = self.degrees[cell] + self.degrees_per_unit * float(value)
                 self.degrees[cell] = normalise(turned)
+        elif block.code is Code.LINEAR or block.code is Code.FROM:
+            # a multiaxis move turns its rotary axes in the class's sense; its FROM gives
+            # their positions (core/motion/multiaxis.py)
+            for cell in self.degrees:
+                value = block.cells[cell]
+                if value is ABSENT:
+                    continue
+                base = 0.0 if block.code is Code.FROM else self.degrees[cell]
+                self.degrees[cell] = normalise(base + float(value) / self.per_degree)
 
     def sequence_text(self, number: int) -> str | None:
         """A unit-increasing sequence number in the N format, wrapped at SEQLIM as the

@@ -1,0 +1,198 @@
+"""Multiaxis linear motion (manual §3.4.7, 001 L6284-6445; spec 03 §12, spec 05 §3.1.4):
+a CL point with its tool axis (x, y, z, i, j, k) goes through the machine's transform class
+(option 116, GEOM5 -> CLASSn, plugins/classes) to the machine's linear and rotary axes.
+
+* FROM5: a tool axis whose length is not 1 is warned about and taken as its unit vector;
+* the linear axes are rounded to whole steps; each rotary axis turns from its last angle
+  to the class's new one the shorter way round (the manual's W5 turns B from 0 to -25 by
+  -25, 001 L4243-4255), its departure rounded to option 119's step in the output units of
+  option 118; the positions the listing prints are kept in [0, 360) (ROTMOV, -400 becomes
+  320); the departures go in DBFSEG(6), (7) and (18), the class's rotary axes in order
+  (head, table, third; 001 L6330-6345), a positive one turning the class's angle up;
+* a move beyond DEPMAX (option 4) or ROTMAX (option 111) is cut into equal segments;
+* the block is CODE 0 (a multiaxis move is a linear move, 001 L6400-6420), its feed command
+  worked from the path's length in part coordinates (E2, 001 L10985-11038), or for a turn
+  of the tool alone from the rotary travel at option 112's radius;
+* LINTOL's linearity test (LINRTY) is core/motion/linearity.py.
+
+A point with three values keeps the tool axis in force (the last one given; +Z at first).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from math import radians, sqrt
+
+import numpy as np
+from gecent.core.cl.records import Motion, MotionSubtype
+from gecent.core.errors import Diagnostic, InputError, NotYetSupported, SourcePosition
+from gecent.core.motion.guard import check_segments
+from gecent.core.motion.linear import godlta_delta
+from gecent.core.motion.rotary import UNITS_PER_DEGREE
+from gecent.core.motion.rounding import to_steps
+from gecent.core.motion.segments import segment_count, segment_place, segments
+from gecent.core.multiaxis.transform import Kinematics, TransformClass
+from gecent.core.output.block import Block, Code
+from gecent.core.state import PostState
+
+ROTARY_CELLS = (6, 7, 18)  # DBFSEG's rotary departures: head, table, third (001 L6330-6345)
+UNIT_TOLERANCE = 1e-4  # FROM5: a tool axis this close to length 1 is a unit vector
+NOT_UNIT = "TOOL AXIS DIRECTION COSINES ARE NOT A UNIT VECTOR; THEY ARE NORMALIZED"
+
+PartPoint = tuple[float, float, float, float, float, float]
+
+
+class MultiaxisMotion:
+    """GOLINE on a multiaxis machine: GEOM5, DEPART with ROTMOV, SEGMNT."""
+
+    def __init__(
+        self,
+        state: PostState,
+        emit: Callable[[Block], None],
+        transform: TransformClass,
+        warn: Callable[[Diagnostic], None],
+    ) -> None:
+        machine = state.machine
+        self.state = state
+        self.emit = emit
+        self.transform = transform
+        self.warn = warn
+        self.step = machine.number_option(14)
+        self.depmax = round(machine.number_option(4) / self.step)
+        # R + TL: head 1's small gripper (option 104) until LOAD names another and LOADTL a
+        # tool length (docs/decisions.md)
+        options = tuple(machine.number_option(n) for n in range(100, 106))
+        self.kinematics = Kinematics(
+            reach=machine.number_option(104),
+            options=(options[0], options[1], options[2], options[3], options[4], options[5]),
+        )
+        self.per_degree = UNITS_PER_DEGREE.get(machine.number_option(118), 1.0)
+        self.rotary_step = machine.number_option(119) or 0.0001
+        # ROTMAX in rotary steps: option 111 is in degrees
+        self.rotmax = max(1, int(machine.number_option(111) * self.per_degree / self.rotary_step))
+        self.columns = transform.rotary  # the machine columns A, B, C it drives
+        self.cells = ROTARY_CELLS[: len(self.columns)]
+        for cell in self.cells:
+            if machine.registers.formats[cell] is None:
+                raise InputError(
+                    f"option 116 = {transform.number} ({transform.name}) drives "
+                    f"{len(self.columns)} rotary axes, but register {cell} has no format",
+                    SourcePosition(machine.origin),
+                )
+        self.tool_axis: tuple[float, float, float] = (0.0, 0.0, 1.0)
+        self.machine_previous = np.zeros((1, 6))  # the last machine point (radians)
+        # each rotary axis's angle so far, unwrapped (degrees), and in rotary steps
+        self.angles = [0.0] * len(self.columns)
+        self.rotary_previous = [0] * len(self.columns)
+
+    # -- records -----------------------------------------------------------------------
+
+    def record(self, record: Motion) -> None:
+        if record.subtype is MotionSubtype.FROM:
+            self._from(record)
+        elif record.subtype is MotionSubtype.GODLTA:
+            delta = godlta_delta(record.points[0])
+            previous = self.state.position.previous_part
+            translation = self.state.position.translation
+            point = tuple(previous[a] + delta[a] - translation[a] for a in range(3))
+            self._goto(record, point)
+        else:
+            for point in record.points:
+                self._goto(record, point)
+
+    def _part(self, record: Motion, point: tuple[float, ...]) -> PartPoint:
+        """The point with TRANS and its tool axis (FROM5's unit check)."""
+        if len(point) >= 6:
+            i, j, k = point[3:6]
+            length = sqrt(i * i + j * j + k * k)
+            if length == 0.0:
+                raise InputError("the tool axis i, j, k is 0, 0, 0", record.where)
+            if abs(length - 1.0) > UNIT_TOLERANCE:
+                self.warn(Diagnostic(NOT_UNIT, record.where))
+            self.tool_axis = (i / length, j / length, k / length)
+        tx, ty, tz = self.state.position.translation
+        i, j, k = self.tool_axis
+        return (point[0] + tx, point[1] + ty, point[2] + tz, i, j, k)
+
+    def _machine(self, part: PartPoint) -> tuple[list[int], list[int], bool]:
+        """GEOM5: the machine point in steps (linear) and the rotary axes' unwrapped
+        positions in rotary steps, and whether the point is singular."""
+        result = self.transform.direct(
+            np.array([part]), self.kinematics, previous=self.machine_previous
+        )
+        axes = result.axes[0]
+        self.machine_previous = result.axes
+        linear = [to_steps(float(axes[a]), self.step) for a in range(3)]
+        rotary = []
+        for index, column in enumerate(self.columns):
+            degrees = float(np.degrees(axes[column]))
+            turn = (degrees - self.angles[index] + 180.0) % 360.0 - 180.0  # the shorter way
+            self.angles[index] += turn
+            rotary.append(round(self.angles[index] * self.per_degree / self.rotary_step))
+        singular = bool(result.singular[0]) if result.singular.size else False
+        return linear, rotary, singular
+
+    def _from(self, record: Motion) -> None:
+        position = self.state.position
+        part = self._part(record, record.points[0])
+        linear, rotary, _ = self._machine(part)
+        position.present_part[:] = list(part)
+        position.present[:3] = linear
+        block = Block(Code.FROM, record.number)
+        for axis in range(3):
+            block.cells[3 + axis] = linear[axis] * self.step
+        for cell, steps in zip(self.cells, rotary, strict=True):
+            # the rotary positions, in the output units (the listing's FROM line)
+            whole = 360.0 * self.per_degree
+            block.cells[cell] = (steps * self.rotary_step) % whole
+        block.position = tuple(linear)
+        position.previous_part[:] = position.present_part
+        position.previous[:] = position.present
+        position.from_given = True
+        self.rotary_previous = rotary
+        self.emit(block)
+
+    def _goto(self, record: Motion, point: tuple[float, ...]) -> None:
+        position = self.state.position
+        part = self._part(record, point)
+        linear, rotary, _ = self._machine(part)
+        departures = [linear[a] - position.previous[a] for a in range(3)]
+        turns = [r - p for r, p in zip(rotary, self.rotary_previous, strict=True)]
+        if not any(departures) and not any(turns):
+            return  # no move (001 L4283-4290)
+        count = segment_count(departures + turns, [self.depmax] * 3 + [self.rotmax] * len(turns))
+        if count > 1:
+            check_segments(count, self.state.max_segments, record.where, "move")
+        previous_part = position.previous_part
+        path = sqrt(sum((part[a] - previous_part[a]) ** 2 for a in range(3)))
+        reached = list(position.previous[:3])
+        pieces = segments(departures + turns, count) if count > 1 else (tuple(departures + turns),)
+        for index, piece in enumerate(pieces):
+            linear_piece = piece[:3]
+            for axis, steps in enumerate(linear_piece):
+                reached[axis] += steps
+            block = Block.motion(
+                Code.LINEAR, record.number, tuple(linear_piece), tuple(reached), self.step
+            )
+            turned = 0.0
+            for cell, steps in zip(self.cells, piece[3:], strict=True):
+                block.cells[cell] = steps * self.rotary_step
+                turned = max(turned, abs(steps) * self.rotary_step / self.per_degree)
+            block.feed_length = path / count if path > 0.0 else self._rotary_length(turned)
+            block.segment = segment_place(index, count)
+            self.emit(block)
+        position.present_part[:] = list(part)
+        position.present[:3] = linear
+        position.previous_part[:] = position.present_part
+        position.previous[:] = position.present
+        self.rotary_previous = rotary
+
+    def _rotary_length(self, degrees: float) -> float:
+        """A turn of the tool alone: the arc option 112's part radius sweeps (the feed of a
+        rotary move, 001 L10936-10984)."""
+        radius = self.state.machine.number_option(112)
+        if radius <= 0.0:
+            raise NotYetSupported(
+                "a turn of the tool alone on a machine without a part radius (option 112)"
+            )
+        return radians(degrees) * radius

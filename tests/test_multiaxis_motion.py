@@ -1,0 +1,150 @@
+"""Multiaxis linear motion (manual §3.4.7; spec 03 §12, spec 05 §3.1.4): points with tool
+axes through the machine's transform class, departures with ROTMOV, segments, feed by the
+part path."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, replace
+from pathlib import Path
+
+import numpy as np
+import pytest
+from gecent.core.cl.records import Motion, MotionSubtype
+from gecent.core.dispatch.post import post
+from gecent.core.errors import NotYetSupported
+from gecent.core.machine import standard_machine
+from gecent.core.motion.multiaxis import MultiaxisMotion
+from gecent.core.multiaxis.transform import B, Kinematics, MachinePoints, Points, as_points
+from gecent.core.output.block import Block, Code
+from gecent.core.output.tape import tape_line
+from gecent.core.plugins import PluginSet
+from gecent.core.state import PostState
+
+PROGRAM = """PARTNO MULTIAXIS
+MACHIN/GECENT,40
+FROM/0,0,10,0,0,1
+FEDRAT/10
+GOTO/1,0,10,0,0,1
+GOTO/1,0,10,0,0.6,0.8
+GOTO/2,1,10,0.6,0,0.8
+GOTO/2,1,9
+FINI
+"""
+
+
+def test_mach40_posts_a_multiaxis_program(plugins: PluginSet, tmp_path: Path) -> None:
+    """MACH40 is class 1 (table C about Z, head A about X), R + TL = option 104 = 4 in,
+    rotary output in hundredths of a revolution (option 118 = -1), ROTMAX 35.99964 degrees
+    (option 111). Worked by hand from class 1's equations:
+
+    * FROM along Z (k = 1, singular): C stays 0, A = 90, Z = 10 + 4 = 14;
+    * (1, 0, 10) along Z: X = x sin C - y cos C = 0, Y = x cos C + y sin C = 1: Y+1;
+    * tool (0, .6, .8): C = 90, A = 53.13; X = 1, Y = 4 x .6 = 2.4, Z = 10 + 3.2 = 13.2;
+      C turns 25 units (90 degrees) and A -10.2417 (-36.87): three segments of ROTMAX;
+    * (2, 1, 10) with (.6, 0, .8): C back to 0 (the shorter way), X = -1, Y = 2 + 2.4:
+      X -2, Y +2 in three segments;
+    * a 3-value point keeps the tool axis: Z-1."""
+    program = tmp_path / "m.apt"
+    program.write_text(PROGRAM)
+    result = post(str(program), plugins)
+    lines = [tape_line(b) for b in result.blocks if b.code is not Code.PARTNO]
+    assert [line for line in lines if line] == [
+        "N005G01Y+1F01000",
+        "N006G11X+03333Y+04667Z-02667A-34139C+83333F0012",
+        "N006X+03334Y+04666Z-02666A-34138C+83334",
+        "N006X+03333Y+04667Z-02667A-34139C+83333",
+        "N007X-06667Y+06667C-83333F0212",
+        "N007X-06666Y+06666C-83334",
+        "N007X-06667Y+06667C-83333",
+        "N008G01Z-1F01000",
+    ]
+
+
+@dataclass(frozen=True)
+class GivenPoints:
+    """A transform class giving the machine points a worked example states (the manual's
+    W5 and E2 name no class): part x picks the machine point."""
+
+    points: dict[float, tuple[float, ...]]
+    number: int = 1
+    name: str = "GIVEN"
+    section: str = "§4.2"
+    structure: str = "5(3,0,2)"
+    rotary: tuple[int, ...] = (3, B)
+
+    def direct(
+        self, part: Points, kinematics: Kinematics, previous: Points | None = None
+    ) -> MachinePoints:
+        rows = [self.points[float(x)] for x in as_points(part)[:, 0]]
+        axes = np.array([[*row[:3], np.radians(row[3]), np.radians(row[4]), 0.0] for row in rows])
+        return MachinePoints(axes, np.zeros(len(rows), dtype=bool))
+
+    def inverse(self, machine: Points, kinematics: Kinematics) -> Points:
+        raise AssertionError("not used")
+
+
+def _moves(given: GivenPoints, points: list[tuple[float, ...]]) -> list[Block]:
+    machine = standard_machine().with_options({118: 1.0, 111: 999.0, 119: 0.0001, 4: 99.9999})
+    registers = machine.registers
+    formats = list(registers.formats)
+    letters = list(registers.letters)
+    formats[6] = formats[7] = formats[3]
+    letters[6], letters[7] = "A", "B"
+    machine = replace(
+        machine, heads=(replace(registers, formats=tuple(formats), letters=tuple(letters)),)
+    )
+    blocks: list[Block] = []
+    motion = MultiaxisMotion(PostState(machine), blocks.append, given, lambda d: None)
+    for number, point in enumerate(points, start=1):
+        subtype = MotionSubtype.FROM if number == 1 else MotionSubtype.GOTO
+        motion.record(Motion("t", number, number, subtype, (point,)))
+    return blocks
+
+
+def test_w5_multiaxis_departures() -> None:
+    """Spec 03 W5 (001 L4243-4255): present less previous: dX 11.5730 = 22.6841 - 11.1111,
+    dY 3.3699 = 3.2466 - (-0.1233), dZ 0, dA 25 = 50 - 25, dB -25 = -25 - 0."""
+    given = GivenPoints(
+        {1.0: (11.1111, -0.1233, -1.0, 25.0, 0.0), 2.0: (22.6841, 3.2466, -1.0, 50.0, -25.0)}
+    )
+    _, move = _moves(given, [(1.0, 0, 0, 0, 0, 1), (2.0, 0, 0, 0, 0, 1)])
+    assert [round(float(move.cells[k]), 4) for k in (3, 4, 5, 6, 7)] == [
+        11.573,
+        3.3699,
+        0.0,
+        25.0,
+        -25.0,
+    ]
+
+
+def test_e2_the_feed_goes_by_the_part_path() -> None:
+    """Spec 05 E2 (001 L10985-11038): P1 (0, 1, 2) to P2 (3, 5, 2): S = 5 in part
+    coordinates; the machine's departures (6, 8, 3, B 90) are not used."""
+    given = GivenPoints({0.0: (0.0, 0.0, 9.0, 0.0, 90.0), 3.0: (6.0, 8.0, 12.0, 0.0, 180.0)})
+    _, move = _moves(given, [(0.0, 1, 2, 0, 0, 1), (3.0, 5, 2, 0, 1, 0)])
+    assert move.feed_length == pytest.approx(5.0)
+    assert float(move.cells[7]) == pytest.approx(90.0)
+
+
+def test_a_tool_axis_not_of_length_one_is_warned(plugins: PluginSet, tmp_path: Path) -> None:
+    """FROM5 (001 L6290-6300): the direction cosines' length is tested."""
+    program = tmp_path / "m.apt"
+    program.write_text(PROGRAM.replace("GOTO/1,0,10,0,0.6,0.8", "GOTO/1,0,10,0,0.6,0.9"))
+    result = post(str(program), plugins)
+    assert any("NOT A UNIT VECTOR" in d.text for d in result.diagnostics)
+
+
+@pytest.mark.parametrize(
+    ("line", "feature"),
+    [
+        ("CIRCLE/1,0,10,0,0,1,1", "circular interpolation on a multiaxis machine"),
+        ("CYCLE/DRILL,1,10,IPM,0.1", "a canned cycle on a multiaxis machine"),
+    ],
+)
+def test_what_multiaxis_motion_does_not_do_yet_is_named(
+    plugins: PluginSet, tmp_path: Path, line: str, feature: str
+) -> None:
+    program = tmp_path / "m.apt"
+    program.write_text(PROGRAM.replace("GOTO/2,1,9", f"{line}\nGOTO/2,1,9"))
+    with pytest.raises(NotYetSupported, match=feature):
+        post(str(program), plugins)
