@@ -144,6 +144,17 @@ class Modes:
 
 
 @dataclass(slots=True)
+class Linearity:
+    """LINTOL (001 L6980-7043): RADLIN, the sphere's radius (0: no testing), the cone's
+    half-angle in degrees (None: no cone test) and LINTOL/OFF's exclusion of one-point
+    records."""
+
+    radius: float = 0.0
+    cone: float | None = None
+    one_point_records: bool = True
+
+
+@dataclass(slots=True)
 class Threading:
     """PITCH's THLEAD, THMODE and THRATE (with the final lead and the thread length they
     come from), THREAD's THFLAG and ITHTYP, and ENCODE (the encoder is coupled)
@@ -215,6 +226,7 @@ class PostState:
     sequence: int = 0  # SEQCTR: the CL record number of the record being processed
     skipping: bool = False  # SKPFLG (OPSKIP)
     max_segments: int = 100_000  # gecent's bound on one CL move's blocks (0: none)
+    linearity: Linearity = field(default_factory=Linearity)  # LINTOL (multiaxis)
     head: int = 0  # IHEAD of a multihead run's head (0: a single-head run)
     multihead_op: int = 0  # NOP: the last OP/n of this head
 

@@ -17,7 +17,7 @@ from gecent.core.motion.multiaxis import MultiaxisMotion
 from gecent.core.multiaxis.transform import B, Kinematics, MachinePoints, Points, as_points
 from gecent.core.output.block import Block, Code
 from gecent.core.output.tape import tape_line
-from gecent.core.plugins import PluginSet
+from gecent.core.plugins import PluginSet, get_plugins
 from gecent.core.state import PostState
 
 PROGRAM = """PARTNO MULTIAXIS
@@ -148,3 +148,58 @@ def test_what_multiaxis_motion_does_not_do_yet_is_named(
     program.write_text(PROGRAM.replace("GOTO/2,1,9", f"{line}\nGOTO/2,1,9"))
     with pytest.raises(NotYetSupported, match=feature):
         post(str(program), plugins)
+
+
+def test_linrty_leaves_every_piece_within_the_sphere() -> None:
+    """LINRTY (spec 03 §15.5): each piece it outputs has its machine midpoint, carried back
+    to the part, within r of the part midpoint (the tolerance sphere), and within the cone;
+    the pieces end at the move's end."""
+    from gecent.core.motion.linearity import LinearityTest, _midpoint
+    from gecent.core.state import Linearity
+    from gecent.plugins.classes.class1 import Class1
+
+    transform, kinematics = Class1(), Kinematics(reach=4.0)
+    test = LinearityTest(transform, kinematics)
+    rule = Linearity(radius=0.001, cone=0.5)
+    start = (0.0, 0.0, 10.0, 0.0, 0.6, 0.8)
+    end = (2.0, 0.0, 10.0, 0.6, 0.0, 0.8)
+    machine = transform.direct(np.array([start]), kinematics).axes[0]
+    points = test.points(start, machine, end, rule)
+    assert len(points) > 3 and points[-1] == end
+    at, at_machine = start, machine
+    for point in points:
+        point_machine = test.machine(point, at_machine)
+        back = transform.inverse(((at_machine + point_machine) / 2).reshape(1, 6), kinematics)[0]
+        half = _midpoint(at, point)
+        assert np.linalg.norm(back[:3] - np.array(half[:3])) <= rule.radius
+        at, at_machine = point, point_machine
+
+
+def _lintol_program(tmp_path: Path, lintol: str) -> list[str]:
+    program = tmp_path / "l.apt"
+    program.write_text(
+        "PARTNO L\nMACHIN/GECENT,40\nFROM/0,0,10,0,0.6,0.8\nFEDRAT/10\n"
+        f"{lintol}\nGOTO/2,0,10,0.6,0,0.8\nFINI\n"
+    )
+    result = post(str(program), get_plugins())
+    lines = [line for b in result.blocks if b.code is Code.LINEAR and (line := tape_line(b))]
+    return [line[4:] if line.startswith("N") else line for line in lines]  # (N aside)
+
+
+def test_lintol_cuts_a_move_that_leaves_the_tolerance(tmp_path: Path) -> None:
+    """LINTOL/r (001 L6980-7043): no test before it (ROTMAX's three segments), many pieces
+    with it; LINTOL/0 cancels it; LINTOL/OFF leaves a one-point record untested."""
+    untested = _lintol_program(tmp_path, "PPRINT NO LINTOL")
+    assert len(untested) == 3  # C turns 90 degrees: three ROTMAX segments
+    assert len(_lintol_program(tmp_path, "LINTOL/0.001")) > 20
+    assert _lintol_program(tmp_path, "LINTOL/0.001\nLINTOL/0") == untested
+    assert _lintol_program(tmp_path, "LINTOL/0.001\nLINTOL/OFF") == untested
+
+
+def test_lintol_forms_are_checked(tmp_path: Path) -> None:
+    from gecent.core.errors import InputError
+
+    program = tmp_path / "l.apt"
+    program.write_text("PARTNO L\nMACHIN/GECENT,40\nLINTOL/-1\nFINI\n")
+    with pytest.raises(InputError, match="LINTOL expects"):
+        post(str(program), get_plugins())

@@ -13,7 +13,8 @@ a CL point with its tool axis (x, y, z, i, j, k) goes through the machine's tran
 * the block is CODE 0 (a multiaxis move is a linear move, 001 L6400-6420), its feed command
   worked from the path's length in part coordinates (E2, 001 L10985-11038), or for a turn
   of the tool alone from the rotary travel at option 112's radius;
-* LINTOL's linearity test (LINRTY) is core/motion/linearity.py.
+* with LINTOL, each move is first tested for linearity and cut where the tool tip would
+  leave the tolerance (LINRTY, core/motion/linearity.py).
 
 A point with three values keeps the tool axis in force (the last one given; +Z at first).
 """
@@ -28,6 +29,7 @@ from gecent.core.cl.records import Motion, MotionSubtype
 from gecent.core.errors import Diagnostic, InputError, NotYetSupported, SourcePosition
 from gecent.core.motion.guard import check_segments
 from gecent.core.motion.linear import godlta_delta
+from gecent.core.motion.linearity import LinearityTest
 from gecent.core.motion.rotary import UNITS_PER_DEGREE
 from gecent.core.motion.rounding import to_steps
 from gecent.core.motion.segments import segment_count, segment_place, segments
@@ -84,6 +86,8 @@ class MultiaxisMotion:
         # each rotary axis's angle so far, unwrapped (degrees), and in rotary steps
         self.angles = [0.0] * len(self.columns)
         self.rotary_previous = [0] * len(self.columns)
+        self.machine_raw = np.zeros(6)
+        self.singular = False  # the last point was singular (no linearity test from it)
 
     # -- records -----------------------------------------------------------------------
 
@@ -124,18 +128,21 @@ class MultiaxisMotion:
         self.machine_previous = result.axes
         linear = [to_steps(float(axes[a]), self.step) for a in range(3)]
         rotary = []
+        raw = axes.copy()
         for index, column in enumerate(self.columns):
             degrees = float(np.degrees(axes[column]))
             turn = (degrees - self.angles[index] + 180.0) % 360.0 - 180.0  # the shorter way
             self.angles[index] += turn
+            raw[column] = np.radians(self.angles[index])
             rotary.append(round(self.angles[index] * self.per_degree / self.rotary_step))
+        self.machine_raw = raw  # (unrounded, the angles unwrapped: LINRTY's machine point)
         singular = bool(result.singular[0]) if result.singular.size else False
         return linear, rotary, singular
 
     def _from(self, record: Motion) -> None:
         position = self.state.position
         part = self._part(record, record.points[0])
-        linear, rotary, _ = self._machine(part)
+        linear, rotary, self.singular = self._machine(part)
         position.present_part[:] = list(part)
         position.present[:3] = linear
         block = Block(Code.FROM, record.number)
@@ -153,9 +160,31 @@ class MultiaxisMotion:
         self.emit(block)
 
     def _goto(self, record: Motion, point: tuple[float, ...]) -> None:
-        position = self.state.position
         part = self._part(record, point)
-        linear, rotary, _ = self._machine(part)
+        rule = self.state.linearity
+        if (
+            rule.radius > 0.0
+            and not self.state.feed.rapid_ipm
+            and (rule.one_point_records or len(record.points) > 1)
+            and not self.singular
+        ):
+            # LINRTY (not for rapid moves, nor for one-point records under LINTOL/OFF,
+            # nor from a singular point, 001 L6845-6870, L7100-7130)
+            start = self.state.position.previous_part
+            begin: PartPoint = (start[0], start[1], start[2], start[3], start[4], start[5])
+            test = LinearityTest(self.transform, self.kinematics)
+            points = test.points(begin, self.machine_raw, part, rule)
+            if len(points) > 1 and len(points) > self.state.max_segments > 0:
+                check_segments(len(points), self.state.max_segments, record.where, "move")
+            for inserted in points:
+                self._move(record, inserted)
+            return
+        self._move(record, part)
+
+    def _move(self, record: Motion, part: PartPoint) -> None:
+        position = self.state.position
+        linear, rotary, singular = self._machine(part)
+        self.singular = singular
         departures = [linear[a] - position.previous[a] for a in range(3)]
         turns = [r - p for r, p in zip(rotary, self.rotary_previous, strict=True)]
         if not any(departures) and not any(turns):

@@ -24,6 +24,7 @@ def handlers() -> dict[str, Handler]:
         cycle,
         delay,
         feed,
+        linearity,
         machine,
         multihead,
         select,
@@ -48,6 +49,7 @@ def handlers() -> dict[str, Handler]:
         cutcom,
         select,
         multihead,
+        linearity,
     )
     for module in modules:
         table.update(module.HANDLERS)
