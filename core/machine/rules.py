@@ -160,8 +160,20 @@ def _feed_table(machine: MachineDefinition) -> Iterator[Problem]:
         return
     per_axis = _number(machine, 25) < 0
     if per_axis:
-        axes = f"{int(_number(machine, 22)):03d}".count("1")
-        expected, why = axes, f"option 25 < 0: one [min, max] per linear axis ({axes})"
+        # FEDLIM (001 L11988-12439): per feed range, a pair for each of the three linear
+        # slots (a two-axis machine's third may be zero), then one per rotary axis of a
+        # multiaxis machine (head, table, third; in RPM)
+        rotary = (
+            sum(1 for cell in (6, 7, 18) if machine.registers.formats[cell] is not None)
+            if _number(machine, 116) != 0
+            else 0
+        )
+        count = max(1, int(_number(machine, 18)))
+        expected = (3 + rotary) * count
+        why = (
+            f"option 25 < 0: one [min, max] per axis (3 linear + {rotary} rotary) per feed "
+            f"range ({count})"
+        )
     else:
         count = int(_number(machine, 18))
         expected, why = count, f"option 18 = {count} feedrate ranges"

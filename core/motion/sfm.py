@@ -276,7 +276,8 @@ def range_feed_limits(machine: MachineDefinition, feed_range: int) -> tuple[floa
         and 1 <= feed_range <= len(ranges)
     ):
         return ranges[feed_range - 1]
-    return machine.number_option(48), machine.number_option(25)
+    # (option 25 < 0 asks for per-axis limits, FEDLIM: its size is the highest feed)
+    return machine.number_option(48), abs(machine.number_option(25))
 
 
 def piece_feed(machine: MachineDefinition, feed: Feed, speed: float) -> tuple[float | None, bool]:

@@ -235,7 +235,7 @@ class ThreadElement:
             block = self._block(record, part, tuple(reached), axis, start, rate, k, regfor)
             block.segment = segment_place(index, count)
             block.cells[19] = speed * _vector_length(part, axis, start)
-            if float(block.cells[19]) > self.state.machine.number_option(25):  # type: ignore[arg-type]
+            if float(block.cells[19]) > abs(self.state.machine.number_option(25)):  # type: ignore[arg-type]
                 self.warn(Diagnostic(MAXIPM_EXCEEDED, record.where))
             revolutions = abs(end - start) / abs(rate) if rate else along / start
             block.cut_minutes = revolutions / speed if speed else 0.0

@@ -15,6 +15,7 @@ from math import asin, hypot, pi, radians
 from gecent.core.absent import ABSENT, Absent
 from gecent.core.errors import Diagnostic, InputError, SourcePosition
 from gecent.core.feed.contour import FeedCommand, RapidCommand
+from gecent.core.feed.limits import ROTARY_CELLS, FeedLimits, limited_feed
 from gecent.core.feed.optimise import FeedOptimiser
 from gecent.core.feed.positioning import XY, FeedContext, FeedType, Z
 from gecent.core.motion.gcode import CircularCodes, DimensionCode, LinearCodes, RotaryCodes
@@ -115,6 +116,15 @@ class OutputElement:
         self.end_code: float | Absent = ABSENT if end_code is None else end_code
         length_code = machine.g_code(TOOL_LENGTH_ON)
         self.tool_length_code: float | Absent = ABSENT if length_code is None else length_code
+        # option 25 < 0: each axis's own feed limits (FEDLIM); a multiaxis machine's
+        # rotary axes have theirs after the linear ones
+        rotary = (
+            sum(1 for cell in ROTARY_CELLS if machine.registers.formats[cell] is not None)
+            if machine.number_option(116) != 0
+            else 0
+        )
+        self.feed_limits = FeedLimits(machine, rotary) if machine.number_option(25) < 0 else None
+        self.per_degree = UNITS_PER_DEGREE.get(machine.number_option(118), 1.0)
         # pass 1 of a multihead run (manual §3.4.8.1): OUTPUT finishes the block and dumps
         # it; the GEOUT conversion waits for the merge pass (core/multihead)
         self.dump_only = state.head != 0
@@ -361,20 +371,23 @@ class OutputElement:
             self.cut_minutes += block.cut_minutes
             return
         self._check_feed()
+        wanted = feed.ipm
+        if self.feed_limits is not None and block.code is Code.LINEAR:
+            wanted = self._limited(block, wanted, length)
         multiplied = (
-            self.optimiser.multiplied(block, feed.ipm, code.gdimul, length, code.size_class)
+            self.optimiser.multiplied(block, wanted, code.gdimul, length, code.size_class)
             if self.optimiser.multiplying
             and block.code is Code.LINEAR
             and not self.modern.direct_feed
             else None
         )
         if self.modern.direct_feed:
-            command, ipm, f_format = self._direct_feed(block), feed.ipm, None
+            command, ipm, f_format = self._direct_feed(block), wanted, None
         elif multiplied is not None:
             command, ipm, f_format = multiplied
         else:
             command, ipm, f_format = self.feed.command(
-                feed.ipm, code.gdimul, length, code.size_class
+                wanted, code.gdimul, length, code.size_class
             )
         block.cells[11] = command
         block.cells[19] = ipm
@@ -386,6 +399,24 @@ class OutputElement:
         else:
             block.cut_minutes = length / ipm
         self.cut_minutes += block.cut_minutes
+
+    def _limited(self, block: Block, ipm: float, path: float) -> float:
+        """FEDLIM (option 25 < 0, core/feed/limits.py): the feed each axis allows."""
+        limits = self.feed_limits
+        assert limits is not None and block.steps is not None
+        departures = [s * self.step for s in block.steps[:3]]
+        departures += [0.0] * (3 - len(departures))
+        for index, cell in enumerate(ROTARY_CELLS[: limits.rotary]):
+            value = block.cells[cell]
+            turned = 0.0 if value is ABSENT else radians(float(value) / self.per_degree)
+            departures.append(turned * limits.radii[index])
+        table = limits.limits(self.state.feed.range)
+        limited = limited_feed(ipm, departures, path, table, limits.highest)
+        if limited < ipm - 1e-9:
+            self.diagnostics.append(
+                Diagnostic(f"FEEDRATE REDUCED TO {limited:.3f} BY THE AXIS FEED LIMITS", None)
+            )
+        return limited
 
     def _cycle(self, block: Block) -> None:
         """A control's canned-cycle block (core/motion/control_cycles.py): its F is the

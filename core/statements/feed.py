@@ -59,7 +59,7 @@ def fedrat(run: Post, statement: Statement) -> None:
         ipm = _revolution_ipm(run, statement) if feed.per_revolution else feed.programmed
     # option 109 = +1/+2: a feed above option 25 is a rapid request; tested before the
     # range, as the manual orders it (step 6)
-    rapid = ipm is not None and run.rapid.feedrate(ipm, run.machine.number_option(25))
+    rapid = ipm is not None and run.rapid.feedrate(ipm, abs(run.machine.number_option(25)))
     _select_range(run, request.range, statement)
     if request.maximum is not None:
         maximum = run.units.per_minute(request.maximum, request.unit)

@@ -1,0 +1,82 @@
+"""Per-axis feed limits, FEDLIM (option 25 < 0; manual §4.1.5.3, 001 L11988-12439; spec 05
+§7.2-7.3): machines whose axes have their own lowest and highest feeds.
+
+The table holds, per feed range (option 18), a [min, max] pair for each axis: the three
+linear axes in the CL axis order (option 59's order; a two-axis machine's third pair may be
+zero), then on a multiaxis machine each rotary axis in DBFSEG's order (head, table, third),
+the rotary limits in RPM. A move's feed along each axis is F d / S (S its path: the CL path
+on a multiaxis machine); an axis over its maximum sets the highest feed the move may have,
+F = F_max S / d, the most limiting axis winning; a rotary axis counts its turn as the arc
+at its radius (option 128 the head's tool swing, option 112 the part on the table). An
+axis under its minimum raises the feed as far as no maximum forbids. The feed is then held
+to |option 25|.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from math import pi
+
+from gecent.core.machine.definition import MachineDefinition
+
+ROTARY_CELLS = (6, 7, 18)  # DBFSEG's rotary departures: head, table, third
+
+
+def limited_feed(
+    feed: float,
+    departures: Sequence[float],
+    path: float,
+    limits: Sequence[tuple[float, float]],
+    highest: float,
+) -> float:
+    """FEDLIM: the feed (IPM) a move of ``departures`` (inches, one per table slot) over a
+    path of ``path`` inches may have, given the slots' (min, max) feeds in IPM."""
+    if path <= 0.0:
+        return min(feed, highest)
+    allowed = feed
+    wanted = 0.0
+    for departure, (low, high) in zip(departures, limits, strict=False):
+        along = abs(departure)
+        if along == 0.0 or (low == 0.0 and high == 0.0):
+            continue  # no move on the axis, or a slot "set to zero" (001 L12096-12104)
+        component = along * feed / path
+        if high > 0.0 and component > high:
+            allowed = min(allowed, high * path / along)
+        if low > 0.0 and component < low:
+            wanted = max(wanted, low * path / along)
+    if wanted > allowed:
+        # a minimum asks for more than the move had: as much as every maximum allows
+        ceiling = min(
+            (high * path / abs(d) for d, (_, high) in zip(departures, limits, strict=False)
+             if d and high > 0.0),
+            default=wanted,
+        )  # fmt: skip
+        allowed = min(wanted, ceiling)
+    return min(allowed, highest)
+
+
+class FeedLimits:
+    """One machine's FEDLIM table, by feed range."""
+
+    def __init__(self, machine: MachineDefinition, rotary: int) -> None:
+        pairs = machine.feed_ranges
+        per_range = 3 + rotary
+        self.ranges = [
+            list(pairs[start : start + per_range]) for start in range(0, len(pairs), per_range)
+        ]
+        self.highest = abs(machine.number_option(25))
+        self.radii = (
+            machine.number_option(128),
+            machine.number_option(112),
+            machine.number_option(112),
+        )
+        self.rotary = rotary
+
+    def limits(self, feed_range: int) -> list[tuple[float, float]]:
+        """The range's pairs in IPM (a rotary axis's RPM at its radius)."""
+        table = self.ranges[min(max(feed_range, 1), len(self.ranges)) - 1] if self.ranges else []
+        out = list(table[:3])
+        for index, (low, high) in enumerate(table[3:]):
+            around = 2.0 * pi * self.radii[index]
+            out.append((low * around, high * around))
+        return out
