@@ -386,9 +386,7 @@ class OutputElement:
         elif multiplied is not None:
             command, ipm, f_format = multiplied
         else:
-            command, ipm, f_format = self.feed.command(
-                wanted, code.gdimul, length, code.size_class
-            )
+            command, ipm, f_format = self.feed.command(wanted, code.gdimul, length, code.size_class)
         block.cells[11] = command
         block.cells[19] = ipm
         block.f_format = f_format
