@@ -7,9 +7,11 @@ from dataclasses import replace
 from math import pi, sqrt
 
 import pytest
+from gecent.core.cl.apt_source import AptSourceReader
 from gecent.core.feed.limits import limited_feed
 from gecent.core.machine import standard_machine
 from gecent.core.output.block import Code
+from gecent.core.run import Run
 
 from .test_post_linear import post
 
@@ -75,3 +77,24 @@ def test_a_multiaxis_move_counts_its_table_turn() -> None:
     path = 1.0
     expected = 2 * pi * 16.0 * 0.1 * path / arc  # (the turn rounded to option 119's step)
     assert float(move.cells[19]) == pytest.approx(expected, rel=1e-5)  # type: ignore[arg-type]
+
+
+def test_the_fast_path_leaves_axis_limits_to_the_general_path() -> None:
+    """linuxcnc-mill posts by the fast path; with option 25 < 0 its moves go the general
+    path, FEDLIM on every one, the F word itself held (F is the feed on a modern control)."""
+    from gecent.core.machine.selection import resolve_machine
+    from gecent.core.plugins import get_plugins
+
+    base = resolve_machine(get_plugins(), "linuxcnc-mill", None)
+    machine = base.with_options({25: -2000.0, 18: 1.0, 174: 6.0})
+    machine = replace(machine, feed_ranges=((0.0, 100.0), (0.0, 1000.0), (0.0, 1000.0)))
+    lines = ["UNITS/MM", "FROM/0,0,0", "FEDRAT/400", "GOTO/3,4,0", "GOTO/6,8,0", "GOTO/9,12,0"]
+    fast, slow = (
+        Run(machine, fast=fast).process(AptSourceReader("p.apt").read_lines([*lines, "FINI"]))
+        for fast in (True, False)
+    )
+    tape = [b.punch for b in fast.blocks if b.code is Code.LINEAR]
+    assert tape == [b.punch for b in slow.blocks if b.code is Code.LINEAR]
+    # X may feed 100 mm/min: 400 along (3, 4) asks 240 of X, so F = 100 x 5 / 3
+    assert all(line is not None and line.endswith("F166.667") for line in tape[:1])
+    assert all(line is not None and "F" not in line for line in tape[1:])

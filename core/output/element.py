@@ -383,6 +383,8 @@ class OutputElement:
         )
         if self.modern.direct_feed:
             command, ipm, f_format = self._direct_feed(block), wanted, None
+            if wanted != feed.ipm and feed.ipm > 0:
+                command *= wanted / feed.ipm  # (held by FEDLIM: per minute or per turn)
         elif multiplied is not None:
             command, ipm, f_format = multiplied
         else:
