@@ -8,6 +8,7 @@ supported" error naming the statement and its line; nothing is written then.
 from __future__ import annotations
 
 from collections.abc import Callable, Iterable, Iterator
+from typing import TYPE_CHECKING
 
 from gecent.core.cl.records import (
     Arelem,
@@ -54,7 +55,6 @@ from gecent.core.motion.guard import (
     check_segments,
 )
 from gecent.core.motion.linear import LinearMotion, godlta_delta, path_length
-from gecent.core.motion.multiaxis import MultiaxisMotion
 from gecent.core.motion.positioning import PositioningMotion
 from gecent.core.motion.rotary import RotaryElement
 from gecent.core.motion.thread import ThreadElement
@@ -72,6 +72,9 @@ from gecent.core.statements import Handler, handlers
 from gecent.core.statements.threading import RAPID_THREAD
 from gecent.core.tool import ToolElement
 from gecent.core.units import UnitScale
+
+if TYPE_CHECKING:
+    from gecent.core.motion.multiaxis import MultiaxisMotion
 
 
 class Run(Elements):

@@ -203,3 +203,23 @@ def test_lintol_forms_are_checked(tmp_path: Path) -> None:
     program.write_text("PARTNO L\nMACHIN/GECENT,40\nLINTOL/-1\nFINI\n")
     with pytest.raises(InputError, match="LINTOL expects"):
         post(str(program), get_plugins())
+
+
+def test_a_three_axis_post_never_loads_numpy(tmp_path: Path) -> None:
+    """The transform classes load with the plugins, numpy only when one computes: a
+    three-axis run stays as light as it was (peak memory, start-up)."""
+    import subprocess
+    import sys
+
+    from .conftest import ROOT
+
+    script = (
+        "import sys\n"
+        "from gecent.core.dispatch.post import post\n"
+        "from gecent.core.plugins import get_plugins\n"
+        f"post({str(ROOT / 'examples' / 'hello.apt')!r}, get_plugins())\n"
+        "print('numpy' in sys.modules)\n"
+    )
+    out = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True)
+    assert out.returncode == 0, out.stderr
+    assert out.stdout.strip() == "False"

@@ -5,7 +5,7 @@ rapid, spindle, tool, thread, rotary, positioning, the control's canned cycles."
 from __future__ import annotations
 
 from collections.abc import Callable
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from gecent.core.errors import Diagnostic, NotYetSupported
 from gecent.core.feed.positioning import FeedType
@@ -17,7 +17,6 @@ from gecent.core.motion.control_cycles import ControlCycles
 from gecent.core.motion.fastpath import FastLinear
 from gecent.core.motion.guard import CoordinateGuard
 from gecent.core.motion.linear import LinearMotion
-from gecent.core.motion.multiaxis import MultiaxisMotion
 from gecent.core.motion.positioning import PositioningMotion
 from gecent.core.motion.rotary import RotaryElement
 from gecent.core.motion.thread import ThreadElement
@@ -28,6 +27,9 @@ from gecent.core.spindle import SpindleElement
 from gecent.core.state import PostState, RunResult
 from gecent.core.tool import ToolElement
 from gecent.core.units import UnitScale
+
+if TYPE_CHECKING:
+    from gecent.core.motion.multiaxis import MultiaxisMotion
 
 
 class Elements:
@@ -104,6 +106,9 @@ class Elements:
     def multiaxis(self) -> MultiaxisMotion:
         """GOLINE on a multiaxis machine, through its transform class (option 116)."""
         if self._multiaxis is None:
+            # (numpy comes with the multiaxis element: a three-axis run never loads it)
+            from gecent.core.motion.multiaxis import MultiaxisMotion
+
             number = int(self.machine.number_option(116))
             transform = (self.plugins or get_plugins()).get("classes", number)
             if transform is None:

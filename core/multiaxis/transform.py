@@ -12,12 +12,18 @@ angles in radians, the rotary columns a class does not drive 0.0.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Protocol, runtime_checkable
+from typing import TYPE_CHECKING, Any, Protocol, runtime_checkable
 
-import numpy as np
-from numpy.typing import NDArray
+# numpy is imported where a class computes, not when the plugins load: a three-axis run
+# never pays for it
+if TYPE_CHECKING:
+    import numpy as np
+    from numpy.typing import NDArray
 
-Points = NDArray[np.float64]  # (n, 6)
+    Points = NDArray[np.float64]  # (n, 6)
+    Flags = NDArray[np.bool_]
+else:
+    Points = Flags = Any
 
 # machine columns
 X, Y, Z, A, B, C = range(6)
@@ -48,7 +54,7 @@ class MachinePoints:
     kept: the linearity test is disregarded over such a move, 001 L12845-12870)."""
 
     axes: Points
-    singular: NDArray[np.bool_] = field(default_factory=lambda: np.zeros(0, dtype=bool))
+    singular: Flags = field(default_factory=lambda: _flags())
 
 
 @runtime_checkable
@@ -73,11 +79,17 @@ class TransformClass(Protocol):
         ...
 
 
-def keep_previous(
-    angle: NDArray[np.float64], singular: NDArray[np.bool_], before: float
-) -> NDArray[np.float64]:
+def _flags() -> Flags:
+    import numpy as np
+
+    return np.zeros(0, dtype=bool)
+
+
+def keep_previous(angle: Points, singular: Flags, before: float) -> Points:
     """A singular point keeps the angle of the point before it (or ``before`` for the
     first): a forward fill along the run."""
+    import numpy as np
+
     if not singular.any():
         return angle
     filled = angle.copy()
@@ -91,6 +103,8 @@ def keep_previous(
 
 def as_points(values: object) -> Points:
     """One point or a run of them as an (n, 6) float array."""
+    import numpy as np
+
     points = np.asarray(values, dtype=np.float64)
     if points.ndim == 1:
         points = points.reshape(1, -1)

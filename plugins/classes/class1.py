@@ -25,7 +25,6 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-import numpy as np
 from gecent.core.hookspecs import Register, hookimpl
 from gecent.core.multiaxis.transform import (
     A,
@@ -52,6 +51,8 @@ class Class1:
     def direct(
         self, part: Points, kinematics: Kinematics, previous: Points | None = None
     ) -> MachinePoints:
+        import numpy as np
+
         part = as_points(part)
         x, y, z, i, j, k = part.T
         reach = kinematics.reach
@@ -70,6 +71,8 @@ class Class1:
         return MachinePoints(machine, singular)
 
     def inverse(self, machine: Points, kinematics: Kinematics) -> Points:
+        import numpy as np
+
         machine = as_points(machine)
         big_x, big_y, big_z = machine[:, 0], machine[:, 1], machine[:, 2]
         head, table = machine[:, A], machine[:, C]

@@ -47,7 +47,6 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-import numpy as np
 from gecent.core.hookspecs import Register, hookimpl
 from gecent.core.multiaxis.transform import (
     A,
@@ -76,6 +75,8 @@ class Class3:
     def direct(
         self, part: Points, kinematics: Kinematics, previous: Points | None = None
     ) -> MachinePoints:
+        import numpy as np
+
         part = as_points(part)
         x, y, z, i, j, k = part.T
         tool = kinematics.reach
@@ -106,6 +107,8 @@ class Class3:
         return MachinePoints(machine, off_axis | locked)
 
     def inverse(self, machine: Points, kinematics: Kinematics) -> Points:
+        import numpy as np
+
         machine = as_points(machine)
         big_x, big_z = machine[:, 0], machine[:, 2]
         sin_a, cos_a = np.sin(machine[:, A]), np.cos(machine[:, A])

@@ -29,8 +29,8 @@ CLASS 1's singular case, L12845-12870).
 from __future__ import annotations
 
 from dataclasses import dataclass
+from math import tau
 
-import numpy as np
 from gecent.core.hookspecs import Register, hookimpl
 from gecent.core.multiaxis.transform import (
     A,
@@ -40,15 +40,16 @@ from gecent.core.multiaxis.transform import (
     as_points,
     keep_previous,
 )
-from numpy.typing import NDArray
 
 # a tool axis within this of X (j = k = 0) is the singular case
 SINGULAR = 1e-9
-TURN = 2.0 * np.pi
+TURN = tau
 
 
-def full_turn(angle: NDArray[np.float64]) -> NDArray[np.float64]:
+def full_turn(angle: Points) -> Points:
     """An angle of atan2 (-pi..pi) brought into [0, 2 pi), as the manual's 0 <= A <= 2 pi."""
+    import numpy as np
+
     turned = np.where(angle < 0.0, angle + TURN, angle)
     # a small negative angle plus 2 pi rounds to 2 pi itself; + 0.0 makes -0.0 plain 0.0
     return np.where(turned >= TURN, 0.0, turned) + 0.0
@@ -65,6 +66,8 @@ class Class4:
     def direct(
         self, part: Points, kinematics: Kinematics, previous: Points | None = None
     ) -> MachinePoints:
+        import numpy as np
+
         part = as_points(part)
         x, y, z, _, j, k = part.T
         singular = np.hypot(j, k) < SINGULAR
@@ -80,6 +83,8 @@ class Class4:
         return MachinePoints(machine, singular)
 
     def inverse(self, machine: Points, kinematics: Kinematics) -> Points:
+        import numpy as np
+
         machine = as_points(machine)
         big_x, big_y, big_z = machine[:, 0], machine[:, 1], machine[:, 2]
         table = machine[:, A]

@@ -16,7 +16,6 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-import numpy as np
 from gecent.core.hookspecs import Register, hookimpl
 from gecent.core.multiaxis.transform import Kinematics, MachinePoints, Points, as_points
 
@@ -32,6 +31,8 @@ class Class5:
     def direct(
         self, part: Points, kinematics: Kinematics, previous: Points | None = None
     ) -> MachinePoints:
+        import numpy as np
+
         machine = as_points(part).copy()
         return MachinePoints(machine, np.zeros(len(machine), dtype=bool))
 

@@ -36,7 +36,6 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-import numpy as np
 from gecent.core.errors import InputError
 from gecent.core.hookspecs import Register, hookimpl
 from gecent.core.multiaxis.transform import (
@@ -65,6 +64,8 @@ class Class6:
     def direct(
         self, part: Points, kinematics: Kinematics, previous: Points | None = None
     ) -> MachinePoints:
+        import numpy as np
+
         part = as_points(part)
         x, y, z, i, j, k = part.T
         unreachable = np.abs(k) < SINGULAR
@@ -85,6 +86,8 @@ class Class6:
         return MachinePoints(machine, np.zeros(len(part), dtype=bool))
 
     def inverse(self, machine: Points, kinematics: Kinematics) -> Points:
+        import numpy as np
+
         machine = as_points(machine)
         big_x, big_y, big_z = machine[:, 0], machine[:, 1], machine[:, 2]
         tilt, swivel = machine[:, A], machine[:, B]

@@ -37,7 +37,6 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-import numpy as np
 from gecent.core.errors import InputError
 from gecent.core.hookspecs import Register, hookimpl
 from gecent.core.multiaxis.transform import (
@@ -67,6 +66,8 @@ class Class7:
     def direct(
         self, part: Points, kinematics: Kinematics, previous: Points | None = None
     ) -> MachinePoints:
+        import numpy as np
+
         part = as_points(part)
         x, y, z, i, j, k = part.T
         q, s1, s2 = (kinematics.option(n) for n in (Q_OPTION, S1_OPTION, S2_OPTION))
@@ -90,6 +91,8 @@ class Class7:
         return MachinePoints(machine, np.zeros(len(part), dtype=bool))
 
     def inverse(self, machine: Points, kinematics: Kinematics) -> Points:
+        import numpy as np
+
         machine = as_points(machine)
         big_x, big_y, big_z = machine[:, 0], machine[:, 1], machine[:, 2]
         blind, column = machine[:, A], machine[:, B]

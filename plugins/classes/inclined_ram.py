@@ -26,7 +26,6 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-import numpy as np
 from gecent.core.multiaxis.transform import (
     A,
     C,
@@ -87,6 +86,8 @@ def direct(
     C = atan2(j, i) (lean X) or atan2(-i, j) (lean Y), in (-180, 180] degrees;
     A = atan2(k, sqrt(i^2 + j^2)), in [-90, 90] degrees. A vertical tool (sqrt(i^2 + j^2)
     below SINGULAR) keeps the previous C and is singular."""
+    import numpy as np
+
     _check(lean)
     part = as_points(part)
     x, y, z, i, j, k = part.T
@@ -117,6 +118,8 @@ def inverse(machine: Points, kinematics: Kinematics, lean: int) -> Points:
     y =  TIVAL cos C + XIVAL sin C
     z =  Z cos(Ram Angle) + TL (1 - sin A)
     """
+    import numpy as np
+
     _check(lean)
     machine = as_points(machine)
     big_z, head, table = machine[:, Z], machine[:, A], machine[:, C]
