@@ -98,3 +98,15 @@ def test_the_fast_path_leaves_axis_limits_to_the_general_path() -> None:
     # X may feed 100 mm/min: 400 along (3, 4) asks 240 of X, so F = 100 x 5 / 3
     assert all(line is not None and line.endswith("F166.667") for line in tape[:1])
     assert all(line is not None and "F" not in line for line in tape[1:])
+
+
+def test_an_arc_is_held_to_the_axis_limits_too() -> None:
+    """SELGCR calls FEDLIM as SELG does (001 L1425-1436): a quarter circle of radius 1
+    from (1, 0) to (0, 1) at 20 IPM has chord departures (-1, 1) over an arc of pi/2 in:
+    X's mean feed 20 / (pi/2) = 12.7 exceeds its 5 IPM, so F = 5 x (pi/2) / 1 = 7.854."""
+    machine = standard_machine().with_options({25: -200.0, 18: 1.0, 174: 6.0})
+    machine = replace(machine, feed_ranges=((0.0, 5.0), (0.0, 100.0), (0.0, 100.0)))
+    result = post(["FROM/1,0,0", "FEDRAT/20", "CIRCLE/0,0,0,0,0,1,1", "GOTO/0,1,0"], machine)
+    arcs = [b for b in result.blocks if b.code in (Code.CIRCLE_XY_CCLW, Code.CIRCLE_XY_CLW)]
+    assert arcs
+    assert float(arcs[0].cells[19]) == pytest.approx(5.0 * (pi / 2) / 1.0, rel=1e-3)  # type: ignore[arg-type]

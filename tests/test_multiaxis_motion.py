@@ -11,7 +11,7 @@ import numpy as np
 import pytest
 from gecent.core.cl.records import Motion, MotionSubtype
 from gecent.core.dispatch.post import post
-from gecent.core.errors import NotYetSupported
+from gecent.core.errors import InputError, NotYetSupported
 from gecent.core.machine import standard_machine
 from gecent.core.motion.multiaxis import MultiaxisMotion
 from gecent.core.multiaxis.transform import B, Kinematics, MachinePoints, Points, as_points
@@ -164,8 +164,8 @@ def test_linrty_leaves_every_piece_within_the_sphere() -> None:
     start = (0.0, 0.0, 10.0, 0.0, 0.6, 0.8)
     end = (2.0, 0.0, 10.0, 0.6, 0.0, 0.8)
     machine = transform.direct(np.array([start]), kinematics).axes[0]
-    points = test.points(start, machine, end, rule)
-    assert len(points) > 3 and points[-1] == end
+    points, met = test.points(start, machine, end, rule, 100_000)
+    assert met and len(points) > 3 and points[-1] == end
     at, at_machine = start, machine
     for point in points:
         point_machine = test.machine(point, at_machine)
@@ -223,3 +223,33 @@ def test_a_three_axis_post_never_loads_numpy(tmp_path: Path) -> None:
     out = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True)
     assert out.returncode == 0, out.stderr
     assert out.stdout.strip() == "False"
+
+
+def test_linrty_says_when_the_tolerance_cannot_be_met(tmp_path: Path) -> None:
+    """A tool axis turning from (.6, 0, .8) to (-.6, 0, .8) passes +Z at its midpoint,
+    class 1's singular axis: no halving can follow it, and the run says so (spec 03 open
+    question 18's guard) instead of punching it as tested; a LINTOL so fine it asks for
+    more pieces than --max-segments is refused."""
+    program = tmp_path / "p.apt"
+    program.write_text(
+        "PARTNO P\nMACHIN/GECENT,40\nFROM/5,0,10,0.6,0,0.8\nFEDRAT/10\nLINTOL/0.001\n"
+        "GOTO/5,0,10,-0.6,0,0.8\nFINI\n"
+    )
+    result = post(str(program), get_plugins())
+    assert any("LINEARITY TOLERANCE CANNOT BE MET" in d.text for d in result.diagnostics)
+    program.write_text(
+        program.read_text().replace("GOTO/5,0,10,-0.6,0,0.8", "GOTO/5,0,10,0,0.6,0.8")
+    )
+    program.write_text(program.read_text().replace("LINTOL/0.001", "LINTOL/0.000000000001"))
+    with pytest.raises(InputError, match="segment"):
+        post(str(program), get_plugins(), max_segments=50)
+
+
+def test_lintol_r_alone_drops_the_cone() -> None:
+    """LINTOL/r: the sphere test only (001 L6936-6946)."""
+    from gecent.core.cl.apt_source import AptSourceReader
+    from gecent.core.run import Run
+
+    run = Run(standard_machine())
+    run.process(AptSourceReader("p.apt").read_lines(["LINTOL/0.01,0.5", "LINTOL/0.02", "FINI"]))
+    assert (run.state.linearity.radius, run.state.linearity.cone) == (0.02, None)

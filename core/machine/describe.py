@@ -152,7 +152,19 @@ def describe_machine(machine: MachineDefinition, show_all: bool = False) -> str:
             f"  further SRTAB cells {machine.speed_count + 1}..{machine.srtab_top}: "
             f"{len(extra)} values"
         )
-    if machine.feed_ranges:
+    if machine.feed_ranges and machine.number_option(25) < 0:
+        # FEDLIM's table: per feed range, the linear slots then the rotary axes (RPM)
+        lines.append(f"FRTAB axis feed limits (cells {machine.indfr + 1}..{STORE_SIZE}):")
+        rotary = (
+            sum(1 for cell in (6, 7, 18) if machine.registers.formats[cell] is not None)
+            if machine.number_option(116) != 0
+            else 0
+        )
+        names = ["CL x", "CL y", "CL z", "head (RPM)", "table (RPM)", "third (RPM)"][: 3 + rotary]
+        for index, (low, high) in enumerate(machine.feed_ranges):
+            feed_range, slot = divmod(index, len(names))
+            lines.append(f"  range {feed_range + 1} {names[slot]}: {low:g} .. {high:g}")
+    elif machine.feed_ranges:
         lines.append(f"FRTAB feed ranges (cells {machine.indfr + 1}..{STORE_SIZE}):")
         for number, (low, high) in enumerate(machine.feed_ranges, start=1):
             lines.append(f"  range {number}: {low:g} .. {high:g}")

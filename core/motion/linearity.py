@@ -13,7 +13,7 @@ of the part point, not the machine midpoint), and the rest of the move is tested
 
 from __future__ import annotations
 
-from math import acos, pi, radians, sqrt
+from math import atan2, pi, radians, sqrt
 
 import numpy as np
 from gecent.core.multiaxis.transform import Kinematics, TransformClass
@@ -43,13 +43,18 @@ class LinearityTest:
         return unwrapped(axes.axes[0], near, self.transform.rotary)
 
     def points(
-        self, start: Point, start_machine: np.ndarray, end: Point, rule: Linearity
-    ) -> list[Point]:
-        """The part points the move from ``start`` to ``end`` goes through, ``end`` last."""
+        self, start: Point, start_machine: np.ndarray, end: Point, rule: Linearity, limit: int
+    ) -> tuple[list[Point], bool]:
+        """The part points the move from ``start`` to ``end`` goes through, ``end`` last,
+        and False when the tolerance could not be met: a piece still fails after
+        MAX_HALVINGS halvings (a tool axis the class cannot follow smoothly); the rest of
+        the move then goes untested (the caller says so). More than ``limit`` points is
+        refused as a too-fine tolerance (the run's segment bound)."""
         cone = None if rule.cone is None else radians(rule.cone)
         out: list[Point] = []
         end_machine = self.machine(end, start_machine)
-        for _ in range(1 << 16):  # (each pass outputs a point nearer the end)
+        met = True
+        while met:
             target, target_machine = end, end_machine
             inserted: Point | None = None
             for _ in range(MAX_HALVINGS):
@@ -57,16 +62,28 @@ class LinearityTest:
                 back = self.transform.inverse(
                     ((start_machine + target_machine) / 2.0).reshape(1, 6), self.kinematics
                 )[0]
-                if not _outside(back, half, rule.radius, cone):
+                if not _outside(np.asarray(back), half, rule.radius, cone):
                     break
                 inserted = half
                 target, target_machine = half, self.machine(half, start_machine)
-            if inserted is None:
+            else:
+                met = False  # (the last half still fails: the tolerance cannot be met)
+            if inserted is None or not met:
                 break
             out.append(inserted)
+            if 0 < limit < len(out):
+                raise LinearityLimit(len(out))
             start, start_machine = inserted, target_machine
         out.append(end)
-        return out
+        return out, met
+
+
+class LinearityLimit(Exception):
+    """More points than the run's segment bound."""
+
+    def __init__(self, count: int) -> None:
+        super().__init__(count)
+        self.count = count
 
 
 def _midpoint(a: Point, b: Point) -> Point:
@@ -90,5 +107,10 @@ def _outside(back: np.ndarray, half: Point, radius: float, cone: float | None) -
         return True
     if cone is None:
         return False
-    cosine = sum(float(back[3 + a]) * half[3 + a] for a in range(3))
-    return acos(max(-1.0, min(1.0, cosine))) > cone
+    # the angle between the axes by atan2 of their cross and dot products: acos of the dot
+    # product loses angles below about 1e-8 radians
+    a = (float(back[3]), float(back[4]), float(back[5]))
+    b = (half[3], half[4], half[5])
+    cross = (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
+    dot = a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+    return atan2(sqrt(sum(c * c for c in cross)), dot) > cone

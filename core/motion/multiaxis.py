@@ -27,9 +27,10 @@ from math import radians, sqrt
 import numpy as np
 from gecent.core.cl.records import Motion, MotionSubtype
 from gecent.core.errors import Diagnostic, InputError, NotYetSupported, SourcePosition
+from gecent.core.feed.limits import ROTARY_CELLS
 from gecent.core.motion.guard import check_segments
 from gecent.core.motion.linear import godlta_delta
-from gecent.core.motion.linearity import LinearityTest
+from gecent.core.motion.linearity import LinearityLimit, LinearityTest
 from gecent.core.motion.rotary import UNITS_PER_DEGREE
 from gecent.core.motion.rounding import to_steps
 from gecent.core.motion.segments import segment_count, segment_place, segments
@@ -37,7 +38,6 @@ from gecent.core.multiaxis.transform import Kinematics, TransformClass
 from gecent.core.output.block import Block, Code
 from gecent.core.state import PostState
 
-ROTARY_CELLS = (6, 7, 18)  # DBFSEG's rotary departures: head, table, third (001 L6330-6345)
 UNIT_TOLERANCE = 1e-4  # FROM5: a tool axis this close to length 1 is a unit vector
 NOT_UNIT = "TOOL AXIS DIRECTION COSINES ARE NOT A UNIT VECTOR; THEY ARE NORMALIZED"
 
@@ -167,19 +167,39 @@ class MultiaxisMotion:
             and not self.state.feed.rapid_ipm
             and (rule.one_point_records or len(record.points) > 1)
             and not self.singular
+            and not self._singular(part)
         ):
-            # LINRTY (not for rapid moves, nor for one-point records under LINTOL/OFF,
-            # nor from a singular point, 001 L6845-6870, L7100-7130)
+            # LINRTY: not for rapid moves, nor one-point records under LINTOL/OFF, nor a
+            # move into or out of a singular point ("linearity testing is disregarded over
+            # this move", 001 L12845-12870; the angle kept there is no path to test)
             start = self.state.position.previous_part
             begin: PartPoint = (start[0], start[1], start[2], start[3], start[4], start[5])
             test = LinearityTest(self.transform, self.kinematics)
-            points = test.points(begin, self.machine_raw, part, rule)
-            if len(points) > 1 and len(points) > self.state.max_segments > 0:
-                check_segments(len(points), self.state.max_segments, record.where, "move")
+            try:
+                points, met = test.points(
+                    begin, self.machine_raw, part, rule, self.state.max_segments
+                )
+            except LinearityLimit as limit:
+                check_segments(limit.count, self.state.max_segments, record.where, "move")
+                raise
+            if not met:
+                self.warn(
+                    Diagnostic(
+                        "LINEARITY TOLERANCE CANNOT BE MET ON THIS MOVE: ITS REST IS NOT "
+                        "TESTED (THE TOOL AXIS PASSES WHERE THE MACHINE CANNOT FOLLOW IT)",
+                        record.where,
+                    )
+                )
             for inserted in points:
                 self._move(record, inserted)
             return
         self._move(record, part)
+
+    def _singular(self, part: PartPoint) -> bool:
+        """The class leaves an angle of this point undetermined (its tool axis along the
+        axis that angle turns about)."""
+        result = self.transform.direct(np.array([part]), self.kinematics, self.machine_previous)
+        return bool(result.singular.any()) if result.singular.size else False
 
     def _move(self, record: Motion, part: PartPoint) -> None:
         position = self.state.position
@@ -203,11 +223,13 @@ class MultiaxisMotion:
             block = Block.motion(
                 Code.LINEAR, record.number, tuple(linear_piece), tuple(reached), self.step
             )
-            turned = 0.0
             for cell, steps in zip(self.cells, piece[3:], strict=True):
                 block.cells[cell] = steps * self.rotary_step
-                turned = max(turned, abs(steps) * self.rotary_step / self.per_degree)
-            block.feed_length = path / count if path > 0.0 else self._rotary_length(turned)
+            block.feed_length = (
+                path / count
+                if path > 0.0
+                else self._turn_length(list(piece[3:]), list(linear_piece))
+            )
             block.segment = segment_place(index, count)
             self.emit(block)
         position.present_part[:] = list(part)
@@ -216,12 +238,19 @@ class MultiaxisMotion:
         position.previous[:] = position.present
         self.rotary_previous = rotary
 
-    def _rotary_length(self, degrees: float) -> float:
-        """A turn of the tool alone: the arc option 112's part radius sweeps (the feed of a
-        rotary move, 001 L10936-10984)."""
-        radius = self.state.machine.number_option(112)
-        if radius <= 0.0:
+    def _turn_length(self, turns: list[int], slides: list[int]) -> float:
+        """The path of a move that turns the tool without moving its tip in the part: the
+        longer of the slides' travel and each rotary axis's arc at its radius (option 128,
+        the head's tool swing, for the head; option 112, the part's, for a table), as
+        FEDLIM counts a rotary axis (001 L12225-12300)."""
+        machine = self.state.machine
+        longest = sqrt(sum((s * self.step) ** 2 for s in slides))
+        for cell, steps in zip(self.cells, turns, strict=True):
+            radius = machine.number_option(128 if cell == 6 else 112)
+            degrees = abs(steps) * self.rotary_step / self.per_degree
+            longest = max(longest, radians(degrees) * radius)
+        if longest <= 0.0:
             raise NotYetSupported(
-                "a turn of the tool alone on a machine without a part radius (option 112)"
+                "a turn of the tool alone on a machine without its radius (options 112, 128)"
             )
-        return radians(degrees) * radius
+        return longest

@@ -125,6 +125,7 @@ class OutputElement:
         )
         self.feed_limits = FeedLimits(machine, rotary) if machine.number_option(25) < 0 else None
         self.per_degree = UNITS_PER_DEGREE.get(machine.number_option(118), 1.0)
+        self.limited_record: int | None = None
         # pass 1 of a multihead run (manual §3.4.8.1): OUTPUT finishes the block and dumps
         # it; the GEOUT conversion waits for the merge pass (core/multihead)
         self.dump_only = state.head != 0
@@ -372,8 +373,11 @@ class OutputElement:
             return
         self._check_feed()
         wanted = feed.ipm
-        if self.feed_limits is not None and block.code is Code.LINEAR:
-            wanted = self._limited(block, wanted, length)
+        if self.feed_limits is not None:
+            # SELG and SELGCR both call FEDLIM (001 L1425-1436): an arc's axis feeds are
+            # taken from its chord over its length, their mean along the arc
+            path = _arc_length(block, self.step) if block.code in CIRCLE_CODES else length
+            wanted = self._limited(block, wanted, path)
         multiplied = (
             self.optimiser.multiplied(block, wanted, code.gdimul, length, code.size_class)
             if self.optimiser.multiplying
@@ -412,7 +416,8 @@ class OutputElement:
             departures.append(turned * limits.radii[index])
         table = limits.limits(self.state.feed.range)
         limited = limited_feed(ipm, departures, path, table, limits.highest)
-        if limited < ipm - 1e-9:
+        if limited < ipm - 1e-9 and block.record != self.limited_record:
+            self.limited_record = block.record  # (once for the segments of one move)
             self.diagnostics.append(
                 Diagnostic(f"FEEDRATE REDUCED TO {limited:.3f} BY THE AXIS FEED LIMITS", None)
             )

@@ -29,9 +29,10 @@ def lintol(run: Post, statement: Statement) -> None:
     radius = float(args[0])  # type: ignore[arg-type]
     rule.radius = run.units.length(radius)
     rule.one_point_records = True  # LINTOL/r turns one-point testing back on
-    if radius == 0.0:
-        rule.cone = None
-    elif len(args) == 2:
+    # LINTOL/r is the sphere test only (the cone omitted: "need not specify gamma if he does
+    # not wish cone testing", 001 L6936-6946); LINTOL/r,0 cancels the cone too
+    rule.cone = None
+    if radius > 0.0 and len(args) == 2:
         cone = float(args[1])  # type: ignore[arg-type]
         rule.cone = cone if cone > 0.0 else None
 
