@@ -32,6 +32,14 @@ def rotate(run: Post, statement: Statement) -> None:
     absolute systems belong to positioning machines (ROTABA)."""
     if run.machine.number_option(1) != 0:
         raise NotYetSupported("ROTATE on a positioning machine (ROTABA)", statement.where)
+    if run.machine.number_option(116) != 0:
+        # the table's turn changes the part frame the transform class works in (ROTREF,
+        # option 198, manual §3.4.7.2): posting it as a plain rotary block would leave the
+        # next multiaxis point on a stale angle
+        raise NotYetSupported(
+            "ROTATE on a multiaxis machine (ROTREF and option 198, manual §3.4.7.2)",
+            statement.where,
+        )
     run.rotary.statement(statement)
 
 
