@@ -558,3 +558,10 @@ def test_option_155_names_an_axis_the_machine_has(plugins: PluginSet, tmp_path: 
     program.write_text(GANTRY_HEADER.replace("155,1", "155,3") + "FINI\n")
     with pytest.raises(InputError, match="the machine has two axes"):
         post(str(program), plugins)
+
+
+def test_a_safety_that_does_not_withdraw_is_refused(plugins: PluginSet, tmp_path: Path) -> None:
+    program = tmp_path / "p.apt"
+    program.write_text(PARKING.read_text().replace("SAFETY/0.5,0,0", "SAFETY/0.00001,0,0", 1))
+    with pytest.raises(InputError, match="SAFETY does not withdraw the head"):
+        post(str(program), plugins)

@@ -118,6 +118,9 @@ class Parking:
             self.making -= 1
 
     def _rapid(self, head: int, departures: tuple[float, ...], record: int | None) -> None:
+        step = self.out.head_outputs[head - 1].step
+        if all(round(d / step) == 0 for d in departures):
+            return  # (within a step: no move to make)
         before, move, after = self._rapid_blocks(head, departures, record)
         for block in (*before, move, *after):
             self.out.alone(block)

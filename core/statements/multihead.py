@@ -127,6 +127,13 @@ def safety(run: Post, statement: Statement) -> None:
             "SAFETY on a multihead program expects the head's withdrawal departures dx, dy, dz",
             statement.where,
         )
+    half_step = run.machine.number_option(14) / 2.0
+    if all(abs(run.units.length(float(value))) < half_step for value in args):  # type: ignore[arg-type]
+        raise InputError(
+            "SAFETY does not withdraw the head (its departures are less than a step): give "
+            "its departures out of the work",
+            statement.where,
+        )
     common = int(run.machine.number_option(155))
     if common in (1, 2, 3) and args[common - 1] != 0:
         raise InputError(
