@@ -27,6 +27,9 @@ else:
 
 # machine columns
 X, Y, Z, A, B, C = range(6)
+# a quantity the classes divide by, or take an angle from, within this of 0 is a singular
+# case (an angle kept from the point before) or an unreachable tool axis
+SINGULAR = 1e-9
 # part columns
 PX, PY, PZ, PI, PJ, PK = range(6)
 
@@ -85,13 +88,14 @@ def _flags() -> Flags:
     return np.zeros(0, dtype=bool)
 
 
-def keep_previous(angle: Points, singular: Flags, before: float) -> Points:
-    """A singular point keeps the angle of the point before it (or ``before`` for the
-    first): a forward fill along the run."""
+def keep_previous(angle: Points, singular: Flags, previous: Points | None, column: int) -> Points:
+    """A singular point keeps the angle of the point before it: the run's own, or for the
+    first, column ``column`` of ``previous`` (0 with none): a forward fill along the run."""
     import numpy as np
 
     if not singular.any():
         return angle
+    before = 0.0 if previous is None else float(as_points(previous)[-1, column])
     filled = angle.copy()
     indices = np.where(singular, -1, np.arange(len(angle)))
     last = np.maximum.accumulate(indices)

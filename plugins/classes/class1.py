@@ -27,6 +27,7 @@ from dataclasses import dataclass
 
 from gecent.core.hookspecs import Register, hookimpl
 from gecent.core.multiaxis.transform import (
+    SINGULAR,
     A,
     C,
     Kinematics,
@@ -35,9 +36,6 @@ from gecent.core.multiaxis.transform import (
     as_points,
     keep_previous,
 )
-
-# a tool axis within this of Z (k = 1) is the singular case: sqrt(1 - k^2) below 1e-9
-SINGULAR = 1e-9
 
 
 @dataclass(frozen=True)
@@ -58,8 +56,7 @@ class Class1:
         reach = kinematics.reach
         s = np.sqrt(np.clip(1.0 - k * k, 0.0, None))
         singular = s < SINGULAR
-        before = 0.0 if previous is None else float(as_points(previous)[-1, C])
-        table = keep_previous(np.arctan2(j, i), singular, before)
+        table = keep_previous(np.arctan2(j, i), singular, previous, C)
         # with s > 0, (i/s, j/s) = (cos C, sin C): the same equations serve both cases
         cos_c, sin_c = np.cos(table), np.sin(table)
         machine = np.zeros_like(part)

@@ -32,6 +32,7 @@ from dataclasses import dataclass
 
 from gecent.core.hookspecs import Register, hookimpl
 from gecent.core.multiaxis.transform import (
+    SINGULAR,
     B,
     Kinematics,
     MachinePoints,
@@ -39,9 +40,6 @@ from gecent.core.multiaxis.transform import (
     as_points,
     keep_previous,
 )
-
-# a tool axis within this of Y (i = k = 0) is the singular case
-SINGULAR = 1e-9
 
 
 @dataclass(frozen=True)
@@ -61,8 +59,7 @@ class Class2:
         x, y, z, i, _, k = part.T
         reach = kinematics.reach
         singular = np.hypot(i, k) < SINGULAR
-        before = 0.0 if previous is None else float(as_points(previous)[-1, B])
-        table = keep_previous(np.arctan2(i, k), singular, before)
+        table = keep_previous(np.arctan2(i, k), singular, previous, B)
         # (i, k) = (sin B, cos B) for every tool axis the table can give
         sin_b, cos_b = np.sin(table), np.cos(table)
         machine = np.zeros_like(part)

@@ -49,6 +49,7 @@ from dataclasses import dataclass
 
 from gecent.core.hookspecs import Register, hookimpl
 from gecent.core.multiaxis.transform import (
+    SINGULAR,
     A,
     B,
     C,
@@ -58,10 +59,6 @@ from gecent.core.multiaxis.transform import (
     as_points,
     keep_previous,
 )
-
-# a pivot within this of the table's axis (H = 0), or a tool axis within this of the turned
-# frame's x (G = 0), is a singular case
-SINGULAR = 1e-9
 
 
 @dataclass(frozen=True)
@@ -83,21 +80,14 @@ class Class3:
         pivot_x, pivot_y, pivot_z = x + i * tool, y + j * tool, z + k * tool
         span = np.hypot(pivot_x, pivot_y)
         off_axis = span < SINGULAR
-        last = None if previous is None else as_points(previous)[-1]
-        table = keep_previous(
-            np.arctan2(-pivot_x, pivot_y), off_axis, 0.0 if last is None else float(last[C])
-        )
+        table = keep_previous(np.arctan2(-pivot_x, pivot_y), off_axis, previous, C)
         sin_c, cos_c = np.sin(table), np.cos(table)
         turned_i = j * cos_c - i * sin_c
         turned_j = -j * sin_c - i * cos_c
         sign_k = np.where(k >= 0.0, 1.0, -1.0)
         g = np.hypot(turned_j, k)
         locked = g < SINGULAR
-        head_a = keep_previous(
-            np.arctan2(-turned_j * sign_k, np.abs(k)),
-            locked,
-            0.0 if last is None else float(last[A]),
-        )
+        head_a = keep_previous(np.arctan2(-turned_j * sign_k, np.abs(k)), locked, previous, A)
         machine = np.zeros_like(part)
         machine[:, 0] = np.where(off_axis, pivot_y * cos_c - pivot_x * sin_c, span)
         machine[:, 2] = pivot_z

@@ -33,6 +33,7 @@ from math import tau
 
 from gecent.core.hookspecs import Register, hookimpl
 from gecent.core.multiaxis.transform import (
+    SINGULAR,
     A,
     Kinematics,
     MachinePoints,
@@ -41,8 +42,6 @@ from gecent.core.multiaxis.transform import (
     keep_previous,
 )
 
-# a tool axis within this of X (j = k = 0) is the singular case
-SINGULAR = 1e-9
 TURN = tau
 
 
@@ -71,8 +70,7 @@ class Class4:
         part = as_points(part)
         x, y, z, _, j, k = part.T
         singular = np.hypot(j, k) < SINGULAR
-        before = 0.0 if previous is None else float(as_points(previous)[-1, A])
-        table = keep_previous(full_turn(np.arctan2(k, j)), singular, before)
+        table = keep_previous(full_turn(np.arctan2(k, j)), singular, previous, A)
         # (j, k) = (cos A, sin A) for every tool axis the table can give
         cos_a, sin_a = np.cos(table), np.sin(table)
         machine = np.zeros_like(part)

@@ -39,6 +39,7 @@ from dataclasses import dataclass
 from gecent.core.errors import InputError
 from gecent.core.hookspecs import Register, hookimpl
 from gecent.core.multiaxis.transform import (
+    SINGULAR,
     A,
     B,
     Kinematics,
@@ -47,8 +48,6 @@ from gecent.core.multiaxis.transform import (
     as_points,
 )
 
-# a tool axis with |k| below this is parallel to the pivot plane
-SINGULAR = 1e-9
 # the option holding Q, the pivot plane to the part origin along Z
 Q_OPTION = 100
 

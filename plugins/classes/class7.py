@@ -40,6 +40,7 @@ from dataclasses import dataclass
 from gecent.core.errors import InputError
 from gecent.core.hookspecs import Register, hookimpl
 from gecent.core.multiaxis.transform import (
+    SINGULAR,
     A,
     B,
     Kinematics,
@@ -48,8 +49,6 @@ from gecent.core.multiaxis.transform import (
     as_points,
 )
 
-# a tool axis with sqrt(j^2 + k^2) below this lies along X
-SINGULAR = 1e-9
 # the options holding Q (pivot plane to part origin, Z), S1 (blind axis to part origin, Z)
 # and S2 (blind axis to part origin, Y)
 Q_OPTION, S1_OPTION, S2_OPTION = 100, 101, 102

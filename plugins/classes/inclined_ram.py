@@ -27,6 +27,7 @@ import math
 from dataclasses import dataclass
 
 from gecent.core.multiaxis.transform import (
+    SINGULAR,
     A,
     C,
     Kinematics,
@@ -44,8 +45,6 @@ RAM_ANGLE = 100
 # the option holding ZMO's height, "option 125 + 50.3389" on the manual's machine
 RAM_HEIGHT = 101
 
-# a tool axis within this of vertical (sqrt(i^2 + j^2) below 1e-9) leaves C indeterminate
-SINGULAR = 1e-9
 
 # |cos(Ram Angle)| below this is a ram lying down: the equations divide by it
 LEVEL = 1e-9
@@ -96,8 +95,7 @@ def direct(
     singular = level < SINGULAR
     # + 0.0 turns a -0.0 into +0.0, so a tool straight behind gives C = +180, not -180
     angle = np.arctan2(j + 0.0, i + 0.0) if lean == X else np.arctan2(0.0 - i, j + 0.0)
-    before = 0.0 if previous is None else float(as_points(previous)[-1, C])
-    table = keep_previous(angle, singular, before)
+    table = keep_previous(angle, singular, previous, C)
     cos_c, sin_c = np.cos(table), np.sin(table)
     machine = np.zeros_like(part)
     machine[:, Z] = (z - ram.reach * (1.0 - k)) / ram.cos
