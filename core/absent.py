@@ -29,5 +29,11 @@ class _Absent(Enum):
 ABSENT: Final = _Absent.ABSENT
 Absent = Literal[_Absent.ABSENT]
 
+
+def or_zero(value: float | Absent) -> float:
+    """A cell's number, 0.0 where the cell holds nothing."""
+    return 0.0 if value is ABSENT else float(value)
+
+
 # Spellings accepted in machine files for a deleted table entry.
 ABSENT_SPELLINGS: Final = frozenset({"absent", "dmbits"})

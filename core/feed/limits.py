@@ -19,8 +19,6 @@ from math import pi
 
 from gecent.core.machine.definition import MachineDefinition
 
-ROTARY_CELLS = (6, 7, 18)  # DBFSEG's rotary departures: head, table, third
-
 
 def limited_feed(
     feed: float,

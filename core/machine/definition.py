@@ -17,6 +17,8 @@ from gecent.core.machine.regformat import RegisterFormat
 
 OptionValue = float | str
 
+# DBFSEG's rotary departures: head, table, a third rotary axis (001 L6330-6345)
+ROTARY_CELLS = (6, 7, 18)
 # REGFOR locations printed without a decimal point (NDP, 001 L24057-24062).
 NDP_LOCATIONS = frozenset({1, 2, 12, 13, 14, 17})
 
@@ -63,6 +65,14 @@ class MachineDefinition:
     def registers(self) -> RegisterSet:
         """Head 1's register set (the only one on a single-head machine)."""
         return self.heads[0]
+
+    @property
+    def rotary_axes(self) -> int:
+        """The rotary registers a multiaxis machine (option 116) drives through its
+        transform class, head, table and third (0 on any other machine)."""
+        if self.number_option(116) == 0:
+            return 0
+        return sum(1 for cell in ROTARY_CELLS if self.registers.formats[cell] is not None)
 
     @property
     def label(self) -> str:

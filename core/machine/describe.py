@@ -155,11 +155,7 @@ def describe_machine(machine: MachineDefinition, show_all: bool = False) -> str:
     if machine.feed_ranges and machine.number_option(25) < 0:
         # FEDLIM's table: per feed range, the linear slots then the rotary axes (RPM)
         lines.append(f"FRTAB axis feed limits (cells {machine.indfr + 1}..{STORE_SIZE}):")
-        rotary = (
-            sum(1 for cell in (6, 7, 18) if machine.registers.formats[cell] is not None)
-            if machine.number_option(116) != 0
-            else 0
-        )
+        rotary = machine.rotary_axes
         names = ["CL x", "CL y", "CL z", "head (RPM)", "table (RPM)", "third (RPM)"][: 3 + rotary]
         for index, (low, high) in enumerate(machine.feed_ranges):
             feed_range, slot = divmod(index, len(names))

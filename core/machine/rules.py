@@ -163,11 +163,7 @@ def _feed_table(machine: MachineDefinition) -> Iterator[Problem]:
         # FEDLIM (001 L11988-12439): per feed range, a pair for each of the three linear
         # slots (a two-axis machine's third may be zero), then one per rotary axis of a
         # multiaxis machine (head, table, third; in RPM)
-        rotary = (
-            sum(1 for cell in (6, 7, 18) if machine.registers.formats[cell] is not None)
-            if _number(machine, 116) != 0
-            else 0
-        )
+        rotary = machine.rotary_axes
         count = max(1, int(_number(machine, 18)))
         expected = (3 + rotary) * count
         why = (

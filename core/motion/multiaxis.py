@@ -27,7 +27,7 @@ from math import radians, sqrt
 import numpy as np
 from gecent.core.cl.records import Motion, MotionSubtype
 from gecent.core.errors import Diagnostic, InputError, NotYetSupported, SourcePosition
-from gecent.core.feed.limits import ROTARY_CELLS
+from gecent.core.machine.definition import ROTARY_CELLS
 from gecent.core.motion.guard import check_segments
 from gecent.core.motion.linear import godlta_delta
 from gecent.core.motion.linearity import LinearityLimit, LinearityTest

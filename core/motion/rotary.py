@@ -19,13 +19,14 @@ from dataclasses import dataclass
 
 from gecent.core.cl.records import Statement, Word
 from gecent.core.errors import Diagnostic, InputError, NotYetSupported
+from gecent.core.machine.definition import ROTARY_CELLS
 from gecent.core.motion.rounding import to_steps
 from gecent.core.motion.segments import segment_place
 from gecent.core.output.block import Block, Code
 from gecent.core.state import PostState
 
 CLW, CCLW = 1, -1
-HEAD_CELL, TABLE_CELL = 6, 7  # DBFSEG(6) head, DBFSEG(7) table (001 L5600-5606)
+HEAD_CELL, TABLE_CELL = ROTARY_CELLS[:2]  # DBFSEG(6) head, DBFSEG(7) table (001 L5600-5606)
 UNITS_PER_DEGREE = {0.0: 1 / 360, 1.0: 1.0, -1.0: 100 / 360}  # option 118
 
 

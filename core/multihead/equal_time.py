@@ -12,7 +12,7 @@ import copy
 from collections.abc import Iterator
 from math import isclose
 
-from gecent.core.absent import ABSENT, Absent
+from gecent.core.absent import ABSENT, or_zero
 from gecent.core.errors import NotYetSupported
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.multihead.gmout import GMOUT, HeadConverter
@@ -108,7 +108,7 @@ class HeadMoves:
         step = self.step
         # (a two-axis machine's blocks have two departures)
         departures = tuple(s * step for s in block.steps[:3]) + (0.0,) * (3 - len(block.steps))
-        feed = float(block.cells[19]) if block.cells[19] is not ABSENT else 0.0
+        feed = or_zero(block.cells[19])
         if block.code in CIRCLE_CODES:
             plane = PLANES[abs(int(block.code))]
             clockwise = int(block.code) > 0
@@ -132,7 +132,7 @@ class HeadMoves:
                 "(option 252) on one feedrate register"
             )
         u, v, _ = plane.axes
-        magnitudes = [abs(_number(block.cells[8 + a])) for a in range(3)]
+        magnitudes = [abs(or_zero(block.cells[8 + a])) for a in range(3)]
         radius = block.radius or (magnitudes[u] ** 2 + magnitudes[v] ** 2) ** 0.5
         best: tuple[float, tuple[float, float, float]] | None = None
         for su in (1.0, -1.0):
@@ -179,7 +179,7 @@ class HeadMoves:
         if whole:
             steps = list(self.remaining)  # the last piece takes what rounding left
         self.remaining = [r - s for r, s in zip(self.remaining, steps, strict=False)]
-        feed = float(source.cells[19]) if source.cells[19] is not ABSENT else 0.0
+        feed = or_zero(source.cells[19])
         if steps == list(source.steps or ()) and isclose(move.feed, feed):
             return source
         if not any(steps):
@@ -199,7 +199,3 @@ class HeadMoves:
             piece.radius = move.arc.radius
         self.converter.refinish(piece, move.feed)
         return piece
-
-
-def _number(value: float | Absent) -> float:
-    return 0.0 if value is ABSENT else float(value)

@@ -17,7 +17,7 @@ from __future__ import annotations
 from collections.abc import Callable, Iterable
 from math import hypot
 
-from gecent.core.absent import ABSENT, Absent
+from gecent.core.absent import ABSENT, or_zero
 from gecent.core.errors import Diagnostic, InputError, SourcePosition
 from gecent.core.feed.rapid import RapidTraverse
 from gecent.core.machine.definition import MachineDefinition
@@ -145,7 +145,7 @@ class HeadConverter:
             return
         assert block.steps is not None
         length = sum((s * element.step) ** 2 for s in block.steps) ** 0.5
-        ipm = float(block.cells[19]) if block.cells[19] is not ABSENT else 0.0
+        ipm = or_zero(block.cells[19])
         if ipm <= 0 or block.cells[11] is ABSENT:
             return
         command, _, f_format = element.feed.command(
@@ -203,8 +203,8 @@ class GMOUT:
         ops = (first_op, second_op)
         given = [op for op in ops if op.cells[11] == 0.0 and op.cells[9] is not ABSENT]
         if given and all(op.cells[11] != 2.0 for op in ops):
-            spindle = min(_number(op.cells[9]) for op in given)
-            feed = min(_number(op.cells[10]) for op in given)
+            spindle = min(or_zero(op.cells[9]) for op in given)
+            feed = min(or_zero(op.cells[10]) for op in given)
             self.by_rpm = all(op.cells[7] == 1.0 for op in given)
             self.tolerances = (spindle, feed)
 
@@ -237,7 +237,7 @@ class GMOUT:
             (speeds[1], speeds[2], spindle, "SPINDLE SPEEDS" if self.by_rpm else "SFM VALUES")
         ]
         if Code.DWELL not in (first.code, second.code):  # a delay has no feed to compare
-            pairs.append((_number(first.cells[19]), _number(second.cells[19]), feed, "FEEDRATES"))
+            pairs.append((or_zero(first.cells[19]), or_zero(second.cells[19]), feed, "FEEDRATES"))
         for a, b, band, what in pairs:
             if a is None or b is None or max(a, b) <= 0:
                 continue
@@ -257,9 +257,9 @@ class GMOUT:
         SFMHD1/SFMHD2 (001 L7336-7346)."""
         head = block.head or 1
         if block.cells[11] == 1.0:
-            self.parking.safety_given(head, tuple(_number(block.cells[k]) for k in (3, 4, 5)))
+            self.parking.safety_given(head, tuple(or_zero(block.cells[k]) for k in (3, 4, 5)))
         else:
-            self.sfm[head] = _number(block.cells[3])
+            self.sfm[head] = or_zero(block.cells[3])
 
     def text(self, text: str, record: int | None) -> None:
         """A postprocessor comment (CODE +9) in the listing."""
@@ -336,7 +336,7 @@ class GMOUT:
         for part in block.halves or (block,):
             head = part.head or 1
             if part.cells[20] is not ABSENT:
-                self.rpm[head] = _number(part.cells[20])
+                self.rpm[head] = or_zero(part.cells[20])
             if part.position is not None and part.code is not Code.FROM:
                 self.parking.moved(head, part)
             elif part.position is not None:
@@ -388,7 +388,7 @@ class GMOUT:
 
         step = self.heads[0].element.step
         chord = _three(s * step for s in (circle.steps or ()))
-        offsets = tuple(0.0 if v is ABSENT else float(v) for v in circle.cells[8:11])
+        offsets = tuple(or_zero(v) for v in circle.cells[8:11])
         if not any(offsets) and circle.radius is not None:
             offsets = (circle.radius, 0.0, 0.0)
         departures = _three(s * step for s in (line.steps or ()))
@@ -461,7 +461,3 @@ def _three(values: Iterable[float]) -> tuple[float, float, float]:
     """Departures as three axes (a two-axis machine's blocks have two)."""
     x, y, z = (*values, 0.0, 0.0, 0.0)[:3]
     return (x, y, z)
-
-
-def _number(value: float | Absent) -> float:
-    return 0.0 if value is ABSENT else float(value)

@@ -15,9 +15,10 @@ from math import asin, hypot, pi, radians
 from gecent.core.absent import ABSENT, Absent
 from gecent.core.errors import Diagnostic, InputError, SourcePosition
 from gecent.core.feed.contour import FeedCommand, RapidCommand
-from gecent.core.feed.limits import ROTARY_CELLS, FeedLimits, limited_feed
+from gecent.core.feed.limits import FeedLimits, limited_feed
 from gecent.core.feed.optimise import FeedOptimiser
 from gecent.core.feed.positioning import XY, FeedContext, FeedType, Z
+from gecent.core.machine.definition import ROTARY_CELLS
 from gecent.core.motion.gcode import CircularCodes, DimensionCode, LinearCodes, RotaryCodes
 from gecent.core.motion.limits import SlideLimits
 from gecent.core.motion.linear import TWO_AXIS
@@ -118,12 +119,9 @@ class OutputElement:
         self.tool_length_code: float | Absent = ABSENT if length_code is None else length_code
         # option 25 < 0: each axis's own feed limits (FEDLIM); a multiaxis machine's
         # rotary axes have theirs after the linear ones
-        rotary = (
-            sum(1 for cell in ROTARY_CELLS if machine.registers.formats[cell] is not None)
-            if machine.number_option(116) != 0
-            else 0
+        self.feed_limits = (
+            FeedLimits(machine, machine.rotary_axes) if machine.number_option(25) < 0 else None
         )
-        self.feed_limits = FeedLimits(machine, rotary) if machine.number_option(25) < 0 else None
         self.per_degree = UNITS_PER_DEGREE.get(machine.number_option(118), 1.0)
         self.limited_record: int | None = None
         # pass 1 of a multihead run (manual §3.4.8.1): OUTPUT finishes the block and dumps
