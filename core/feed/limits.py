@@ -15,9 +15,12 @@ to |option 25|.
 from __future__ import annotations
 
 from collections.abc import Sequence
-from math import pi
+from math import pi, radians
 
-from gecent.core.machine.definition import MachineDefinition
+from gecent.core.absent import or_zero
+from gecent.core.machine.definition import ROTARY_CELLS, MachineDefinition
+from gecent.core.motion.rotary import UNITS_PER_DEGREE
+from gecent.core.output.block import Block
 
 
 def limited_feed(
@@ -54,21 +57,24 @@ def limited_feed(
 
 
 class FeedLimits:
-    """One machine's FEDLIM table, by feed range."""
+    """One machine's FEDLIM table, by feed range, and a block's feed under it."""
 
-    def __init__(self, machine: MachineDefinition, rotary: int) -> None:
+    def __init__(self, machine: MachineDefinition) -> None:
+        self.rotary = machine.rotary_axes
         pairs = machine.feed_ranges
-        per_range = 3 + rotary
+        per_range = 3 + self.rotary
         self.ranges = [
             list(pairs[start : start + per_range]) for start in range(0, len(pairs), per_range)
         ]
         self.highest = abs(machine.number_option(25))
         self.radii = (
-            machine.number_option(128),
-            machine.number_option(112),
+            machine.number_option(128),  # the head's tool swing
+            machine.number_option(112),  # the part on the table
             machine.number_option(112),
         )
-        self.rotary = rotary
+        self.step = machine.number_option(14)
+        self.per_degree = UNITS_PER_DEGREE.get(machine.number_option(118), 1.0)
+        self.noted: int | None = None  # the record last reported (once for its segments)
 
     def limits(self, feed_range: int) -> list[tuple[float, float]]:
         """The range's pairs in IPM (a rotary axis's RPM at its radius)."""
@@ -78,3 +84,20 @@ class FeedLimits:
             around = 2.0 * pi * self.radii[index]
             out.append((low * around, high * around))
         return out
+
+    def block_feed(
+        self, block: Block, ipm: float, path: float, feed_range: int
+    ) -> tuple[float, str | None]:
+        """The feed a motion block may have over its ``path``, and the diagnostic when it
+        is lowered (once for a move's segments)."""
+        assert block.steps is not None
+        departures = [s * self.step for s in block.steps[:3]]
+        departures += [0.0] * (3 - len(departures))
+        for index, cell in enumerate(ROTARY_CELLS[: self.rotary]):
+            turned = radians(or_zero(block.cells[cell]) / self.per_degree)
+            departures.append(turned * self.radii[index])
+        limited = limited_feed(ipm, departures, path, self.limits(feed_range), self.highest)
+        if limited >= ipm - 1e-9 or block.record == self.noted:
+            return limited, None
+        self.noted = block.record
+        return limited, f"FEEDRATE REDUCED TO {limited:.3f} BY THE AXIS FEED LIMITS"

@@ -15,10 +15,9 @@ from math import asin, hypot, pi, radians
 from gecent.core.absent import ABSENT, Absent
 from gecent.core.errors import Diagnostic, InputError, SourcePosition
 from gecent.core.feed.contour import FeedCommand, RapidCommand
-from gecent.core.feed.limits import FeedLimits, limited_feed
+from gecent.core.feed.limits import FeedLimits
 from gecent.core.feed.optimise import FeedOptimiser
 from gecent.core.feed.positioning import XY, FeedContext, FeedType, Z
-from gecent.core.machine.definition import ROTARY_CELLS
 from gecent.core.motion.gcode import CircularCodes, DimensionCode, LinearCodes, RotaryCodes
 from gecent.core.motion.limits import SlideLimits
 from gecent.core.motion.linear import TWO_AXIS
@@ -119,11 +118,7 @@ class OutputElement:
         self.tool_length_code: float | Absent = ABSENT if length_code is None else length_code
         # option 25 < 0: each axis's own feed limits (FEDLIM); a multiaxis machine's
         # rotary axes have theirs after the linear ones
-        self.feed_limits = (
-            FeedLimits(machine, machine.rotary_axes) if machine.number_option(25) < 0 else None
-        )
-        self.per_degree = UNITS_PER_DEGREE.get(machine.number_option(118), 1.0)
-        self.limited_record: int | None = None
+        self.feed_limits = FeedLimits(machine) if machine.number_option(25) < 0 else None
         # pass 1 of a multihead run (manual §3.4.8.1): OUTPUT finishes the block and dumps
         # it; the GEOUT conversion waits for the merge pass (core/multihead)
         self.dump_only = state.head != 0
@@ -375,7 +370,9 @@ class OutputElement:
             # SELG and SELGCR both call FEDLIM (001 L1425-1436): an arc's axis feeds are
             # taken from its chord over its length, their mean along the arc
             path = _arc_length(block, self.step) if block.code in CIRCLE_CODES else length
-            wanted = self._limited(block, wanted, path)
+            wanted, note = self.feed_limits.block_feed(block, wanted, path, feed.range)
+            if note is not None:
+                self.diagnostics.append(Diagnostic(note, None))
         multiplied = (
             self.optimiser.multiplied(block, wanted, code.gdimul, length, code.size_class)
             if self.optimiser.multiplying
@@ -401,25 +398,6 @@ class OutputElement:
         else:
             block.cut_minutes = length / ipm
         self.cut_minutes += block.cut_minutes
-
-    def _limited(self, block: Block, ipm: float, path: float) -> float:
-        """FEDLIM (option 25 < 0, core/feed/limits.py): the feed each axis allows."""
-        limits = self.feed_limits
-        assert limits is not None and block.steps is not None
-        departures = [s * self.step for s in block.steps[:3]]
-        departures += [0.0] * (3 - len(departures))
-        for index, cell in enumerate(ROTARY_CELLS[: limits.rotary]):
-            value = block.cells[cell]
-            turned = 0.0 if value is ABSENT else radians(float(value) / self.per_degree)
-            departures.append(turned * limits.radii[index])
-        table = limits.limits(self.state.feed.range)
-        limited = limited_feed(ipm, departures, path, table, limits.highest)
-        if limited < ipm - 1e-9 and block.record != self.limited_record:
-            self.limited_record = block.record  # (once for the segments of one move)
-            self.diagnostics.append(
-                Diagnostic(f"FEEDRATE REDUCED TO {limited:.3f} BY THE AXIS FEED LIMITS", None)
-            )
-        return limited
 
     def _cycle(self, block: Block) -> None:
         """A control's canned-cycle block (core/motion/control_cycles.py): its F is the
