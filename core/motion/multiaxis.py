@@ -81,6 +81,7 @@ class MultiaxisMotion:
                     f"{len(self.columns)} rotary axes, but register {cell} has no format",
                     SourcePosition(machine.origin),
                 )
+        self.linearity = LinearityTest(transform, self.kinematics)
         self.tool_axis: tuple[float, float, float] = (0.0, 0.0, 1.0)
         self.machine_previous = np.zeros((1, 6))  # the last machine point (radians)
         # each rotary axis's angle so far, unwrapped (degrees), and in rotary steps
@@ -174,9 +175,8 @@ class MultiaxisMotion:
             # this move", 001 L12845-12870; the angle kept there is no path to test)
             start = self.state.position.previous_part
             begin: PartPoint = (start[0], start[1], start[2], start[3], start[4], start[5])
-            test = LinearityTest(self.transform, self.kinematics)
             try:
-                points, met = test.points(
+                points, met = self.linearity.points(
                     begin, self.machine_raw, part, rule, self.state.max_segments
                 )
             except LinearityLimit as limit:
