@@ -8,7 +8,7 @@ import json
 import sys
 from collections.abc import Callable, Iterable
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import click
 from gecent.core.cl.records import Record
@@ -23,6 +23,10 @@ from gecent.core.cli_support import (
 from gecent.core.errors import InputError
 from gecent.core.macros.dialect import choose_dialect, in_dialect, read_raw
 from gecent.core.output.files import write_atomically
+
+if TYPE_CHECKING:
+    from gecent.core.machine.definition import MachineDefinition
+    from gecent.core.plugins import PluginSet
 
 
 @click.command("cl")
@@ -174,6 +178,22 @@ def verify_command(
     help="The plane drawn (XZ for a lathe: Z across, X up).",
 )
 @click.option("--dialect", metavar="NAME", help=DIALECT_HELP)
+@click.option(
+    "--axis-every",
+    "axis_every",
+    type=int,
+    default=10,
+    show_default=True,
+    help="A five-axis machine: draw the tool axis at every Nth point.",
+)
+@click.option(
+    "--axis-length",
+    "axis_length",
+    type=float,
+    default=10.0,
+    show_default=True,
+    help="A five-axis machine: the length of each tool-axis line drawn.",
+)
 @reporting_errors
 def plot_command(
     input_path: str,
@@ -182,9 +202,12 @@ def plot_command(
     machine_key: str | None,
     plane: str,
     dialect: str | None,
+    axis_every: int,
+    axis_length: float,
 ) -> None:
     """Backplot a tape (read by LinuxCNC's rs274; .ngc, .nc, .tap, .tape) or a CL file:
-    rapid moves dashed, feed moves solid, arcs as arcs."""
+    rapid moves dashed, feed moves solid, arcs as arcs. On a five-axis machine by data the
+    picture is 3-D: the tool tip's path in the part and the tool axis every N points."""
     from gecent.core.machine.selection import resolve_machine
     from gecent.core.plot import cl_segments, is_tape, render, tape_segments
     from gecent.core.verify.check import cl_as_posted, cl_machine
@@ -200,6 +223,12 @@ def plot_command(
     elif override is not None:
         machine = resolve_machine(plugins, override, None)
     unit = "in" if machine is not None and machine.number_option(138) == 0 else "mm"
+    if machine is not None and machine.kinematics is not None:
+        drawn = plot_five_axis(
+            input_path, cl_file, plugins, machine, dialect, output, axis_every, axis_length
+        )
+        click.echo(f"plot: {drawn} points drawn in 3-D to {output}")
+        return
     overlay = None
     if is_tape(input_path):
         diameter = machine is not None and machine.number_option(260) == 1
@@ -224,3 +253,46 @@ def plot_command(
     title = f"{Path(input_path).name} ({plane}, {len(segments)} moves)"
     render(segments, output, plane=plane, title=title, overlay=overlay, unit=unit)
     click.echo(f"plot: {len(segments)} moves drawn to {output}")
+
+
+def plot_five_axis(
+    input_path: str,
+    cl_file: str | None,
+    plugins: PluginSet,
+    machine: MachineDefinition,
+    dialect: str | None,
+    output: str,
+    every: int,
+    length: float,
+) -> int:
+    """The 3-D plot of a five-axis tape or CL file (core/plot5.py); the points drawn."""
+    from gecent.core.plot import is_tape
+    from gecent.core.plot5 import cl_path, render_five_axis, tape_path
+    from gecent.core.verify.check import cl_as_posted
+    from gecent.core.verify.fiveaxis import FiveAxisKinematics, cl_poses
+    from gecent.core.verify.rs274 import interpret
+
+    chain = machine.kinematics
+    assert chain is not None
+    source = cl_file if is_tape(input_path) else input_path
+    poses, lengths = (
+        cl_poses(cl_as_posted(source, plugins, machine, dialect), machine)
+        if source is not None
+        else ([], {})
+    )
+    overlay = cl_path(poses) if poses and is_tape(input_path) else None
+    if is_tape(input_path):
+        tcp = machine.number_option(265) == 1 and chain.tcp_on
+        reading = interpret(input_path, replace={chain.tcp_on: "G43"} if tcp else None)
+        if reading.error is not None:
+            click.echo(
+                f"warning: rs274 stopped at tape line {reading.error_line}: "
+                f"{reading.error}; the path up to there is drawn",
+                err=True,
+            )
+        path = tape_path(reading.moves, FiveAxisKinematics(machine, chain, lengths))
+    else:
+        path = cl_path(poses)
+    title = f"{Path(input_path).name} (tool tip in the part, {len(path)} points)"
+    render_five_axis(path, output, title=title, overlay=overlay, every=every, axis_length=length)
+    return len(path)

@@ -92,7 +92,7 @@ class Run(Elements):
         self.plugins = plugins
         # False: every record by the general path (tests; a multiaxis machine's points
         # go through its transform class)
-        self.fast_allowed = fast and machine.number_option(116) == 0
+        self.fast_allowed = fast and not machine.multiaxis
         self.use_fast_path = self.fast_allowed
         self._fast: FastLinear | None = None
         self.result = RunResult(machine=machine)
@@ -319,11 +319,8 @@ class Run(Elements):
         elif isinstance(record, Arelem):
             self.state.tolerances.take(record.subtype, record.values)
         elif isinstance(record, Circle):
-            if self.machine.number_option(116) != 0:
-                raise NotYetSupported(
-                    "circular interpolation on a multiaxis machine (manual §3.4.7.1)",
-                    record.where,
-                )
+            if self.machine.multiaxis:
+                self._multiaxis_circle()
             self.circle.surface(record)  # ignored on a linear-only control (option 9 = 0)
         elif isinstance(record, Fini):
             if self.macros is not None:
@@ -379,7 +376,7 @@ class Run(Elements):
         if control not in (0.0, 1.0, 2.0, -1.0):  # 3: the 7500's mixed control
             raise NotYetSupported(f"motion with option 1 = {control:g}", record.where)
         positioning = control != 0
-        multiaxis = self.machine.number_option(116) != 0
+        multiaxis = self.machine.multiaxis
         if len(record.points[0]) == 6 and not multiaxis:
             record = three_axis_motion(record, self.machine)  # (or an error naming the line)
         modes = self.state.modes
@@ -413,11 +410,19 @@ class Run(Elements):
             if feed.rapid_requested or feed.rapid_mode:
                 self.rapid.motion(path_length(self.state.position, record))
         if multiaxis:
-            self.multiaxis.record(record)
+            if self._circle is None or not self.circle.begin(record):
+                self.multiaxis.record(record)
             return
         if self.circle.begin(record):
             return
         self.motion.record(record)
+
+    def _multiaxis_circle(self) -> None:
+        """A multiaxis machine's circle goes out through its transform class (manual
+        §3.4.7.1, core/motion/multiaxis_circle.py)."""
+        from gecent.core.motion.multiaxis_circle import MultiaxisCircle
+
+        self.circle.finisher = MultiaxisCircle(self.multiaxis, self.circle).finish
 
     def _multiaxis_special(self, record: Motion, positioning: bool) -> None:
         """What a multiaxis machine's motion does not do yet stops the run naming it."""

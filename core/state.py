@@ -96,6 +96,7 @@ class Tool:
     number: float | None = None
     offset: int | None = None
     length_pending: bool = False
+    length: float | None = None  # LOADTL LENGTH (machine units): a five-axis head's reach
 
 
 @dataclass(slots=True)

@@ -69,6 +69,7 @@ class ToolElement:
         self.output = output
         self.warn = warn
         self.position: int | None = None  # FFRSTL: where the magazine or turret stands
+        self.length_scale: Callable[[float], float] = float  # CL units to the machine's
 
     def statement(self, statement: Statement) -> None:
         """TOOLNO/n[, OFSETL, k][, CLW|CCLW], and on a modern control [, LENGTH, l][, ADJUST, h]."""
@@ -95,7 +96,10 @@ class ToolElement:
                 block.cells[2] = code
                 self.output.output(block)
         adjust = _value_after(statement, "ADJUST")
-        _value_after(statement, "LENGTH")  # checked; the control holds the tool's length
+        # the control holds the tool's length; a five-axis head's computed slides need it
+        _value_after(statement, "LENGTH")
+        length = _length_after(statement)
+        self.state.tool.length = None if length is None else self.length_scale(length)
         number = adjust if adjust is not None else offset if offset is not None else tool
         if offsets == LATHE_OFFSETS:
             if tool > 99:
@@ -297,4 +301,13 @@ def _value_after(statement: Statement, name: str) -> int | None:
                     statement.where,
                 )
             return int(value)
+    return None
+
+
+def _length_after(statement: Statement) -> float | None:
+    """LENGTH, l's length (checked by _value_after first)."""
+    args = statement.args
+    for index, arg in enumerate(args[:-1]):
+        if isinstance(arg, Word) and arg.name == "LENGTH":
+            return float(args[index + 1])  # type: ignore[arg-type]
     return None

@@ -36,9 +36,9 @@ NON_REASSIGNABLE = {
 def test_catalogue_has_every_location_once() -> None:
     cat = catalogue()
     # the manual's 250 options and 120 G locations, then gecent's modern-control ones
-    assert [o.number for o in cat.options] == list(range(1, 265))
-    assert [o.number for o in cat.options if o.status == "gecent"] == list(range(251, 265))
-    assert [g.number for g in cat.tableg] == list(range(1, 131))
+    assert [o.number for o in cat.options] == list(range(1, 266))
+    assert [o.number for o in cat.options if o.status == "gecent"] == list(range(251, 266))
+    assert [g.number for g in cat.tableg] == list(range(1, 132))
     assert all(g.seed == "gecent" for g in cat.tableg[120:])
     assert [m.number for m in cat.tablem] == list(range(1, 201))
     assert [r.number for r in cat.registers] == list(range(1, 31))

@@ -23,8 +23,8 @@ def problems(tmp_path: Path, body: str) -> list[str]:
 
 
 def test_wrong_table_entries(tmp_path: Path) -> None:
-    found = problems(tmp_path, '[tableg]\n131 = 5\n3 = "maybe"\n[tablem]\n4 = -3\n')
-    assert any(p.startswith("[tableg] 131: location must be 1..130") for p in found)
+    found = problems(tmp_path, '[tableg]\n132 = 5\n3 = "maybe"\n[tablem]\n4 = -3\n')
+    assert any(p.startswith("[tableg] 132: location must be 1..131") for p in found)
     assert any(p.startswith('[tableg] 3: value must be a code number or "absent"') for p in found)
     assert any(p.startswith("[tablem] 4: code must be 0 or more") for p in found)
 
@@ -45,9 +45,9 @@ def test_register_rules(tmp_path: Path) -> None:
 
 
 def test_unknown_option_number_and_alias(tmp_path: Path) -> None:
-    found = problems(tmp_path, "[optab]\n265 = 1.0\nno_such_option = 2.0\n64 = 3.0\n")
-    assert "[optab] 265: unknown option (options are 1..264 or an alias)" in found
-    assert "[optab] no_such_option: unknown option (options are 1..264 or an alias)" in found
+    found = problems(tmp_path, "[optab]\n266 = 1.0\nno_such_option = 2.0\n64 = 3.0\n")
+    assert "[optab] 266: unknown option (options are 1..265 or an alias)" in found
+    assert "[optab] no_such_option: unknown option (options are 1..265 or an alias)" in found
     assert any(p.startswith("[optab] 64: option 64 (") and "holds text" in p for p in found)
 
 

@@ -15,6 +15,8 @@ from gecent.core.statements.text import carried
 
 ROOT = Path(__file__).parents[1]
 EXAMPLES = ["hello.apt", "lathe_fanuc.apt", "mill_mach23.apt", "drill_mach24.apt"]
+# a five-axis pack does not take canned cycles yet (a named "not yet supported" error)
+FIVE_AXIS_EXAMPLES = ["hello.apt", "fiveaxis.apt"]
 
 
 def modern_packs(plugins: PluginSet) -> list[str]:
@@ -26,8 +28,10 @@ def modern_packs(plugins: PluginSet) -> list[str]:
 def test_every_modern_pack_punches_its_tape(plugins: PluginSet, tmp_path: Path, code: str) -> None:
     packs = modern_packs(plugins)
     assert {"linuxcnc-mill", "fanuc-mill", "fanuc-lathe"} <= set(packs)
+    five_axis = {pack.load().name for pack in plugins.machines() if pack.load().kinematics}
+    assert {"linuxcnc-5axis-ac", "fanuc-5axis-bc"} <= five_axis
     for machine in packs:
-        for example in EXAMPLES:
+        for example in FIVE_AXIS_EXAMPLES if machine in five_axis else EXAMPLES:
             tape, punched = tmp_path / "p.ngc", tmp_path / f"p.{code}"
             command = ["post", str(ROOT / "examples" / example), "--machine", machine]
             command += ["-o", str(tape), "--punch", code, str(punched)]

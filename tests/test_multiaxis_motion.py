@@ -137,7 +137,6 @@ def test_a_tool_axis_not_of_length_one_is_warned(plugins: PluginSet, tmp_path: P
 @pytest.mark.parametrize(
     ("line", "feature"),
     [
-        ("CIRCLE/1,0,10,0,0,1,1", "circular interpolation on a multiaxis machine"),
         ("CYCLE/DRILL,1,10,IPM,0.1", "a canned cycle on a multiaxis machine"),
     ],
 )
@@ -253,12 +252,3 @@ def test_lintol_r_alone_drops_the_cone() -> None:
     run = Run(standard_machine())
     run.process(AptSourceReader("p.apt").read_lines(["LINTOL/0.01,0.5", "LINTOL/0.02", "FINI"]))
     assert (run.state.linearity.radius, run.state.linearity.cone) == (0.02, None)
-
-
-def test_rotate_on_a_multiaxis_machine_is_named(tmp_path: Path) -> None:
-    """ROTATE/TABLE turns the part frame the class works in (ROTREF, option 198, manual
-    §3.4.7.2): not built yet, so refused by name rather than posted on a stale angle."""
-    program = tmp_path / "r.apt"
-    program.write_text(PROGRAM.replace("GOTO/2,1,9", "ROTATE/TABLE,INCR,40,CLW\nGOTO/2,1,9"))
-    with pytest.raises(NotYetSupported, match="ROTATE on a multiaxis machine"):
-        post(str(program), get_plugins())

@@ -5,6 +5,7 @@ rapid, spindle, tool, thread, rotary, positioning, the control's canned cycles."
 from __future__ import annotations
 
 from collections.abc import Callable
+from dataclasses import replace
 from typing import TYPE_CHECKING, Any
 
 from gecent.core.errors import Diagnostic, NotYetSupported
@@ -30,6 +31,7 @@ from gecent.core.units import UnitScale
 
 if TYPE_CHECKING:
     from gecent.core.motion.multiaxis import MultiaxisMotion
+    from gecent.core.multiaxis.transform import TransformClass
 
 
 class Elements:
@@ -110,7 +112,12 @@ class Elements:
             from gecent.core.motion.multiaxis import MultiaxisMotion
 
             number = int(self.machine.number_option(116))
-            transform = (self.plugins or get_plugins()).get("classes", number)
+            chain = self.machine.kinematics
+            if chain is not None:  # a five-axis machine by data (docs/five-axis.md)
+                tcp = self.machine.number_option(265) == 1
+                transform: TransformClass | None = replace(chain, tool_centre_point=tcp)
+            else:
+                transform = (self.plugins or get_plugins()).get("classes", number)
             if transform is None:
                 raise NotYetSupported(f"transform class {number} (option 116 = {number})")
             self._multiaxis = MultiaxisMotion(self.state, self.output.output, transform, self.warn)
@@ -187,4 +194,5 @@ class Elements:
     def tool(self) -> ToolElement:
         if self._tool_element is None:
             self._tool_element = ToolElement(self.state, self.output, self.warn)
+            self._tool_element.length_scale = self.units.length
         return self._tool_element

@@ -16,9 +16,9 @@ from gecent.core import tomldata
 from gecent.core.absent import ABSENT, ABSENT_SPELLINGS, Absent
 from pydantic import BaseModel, ConfigDict, Field, ValidationError
 
-OPTION_COUNT = 264  # the manual's 1-250 and gecent's 251-264 (docs/modern-controls.md)
+OPTION_COUNT = 265  # the manual's 1-250 and gecent's 251-265 (docs/modern-controls.md)
 MANUAL_OPTION_COUNT = 250
-TABLEG_SIZE = 130  # the manual's 1-120 and gecent's 121-130
+TABLEG_SIZE = 131  # the manual's 1-120 and gecent's 121-131
 TABLEM_SIZE = 200
 REGISTER_COUNT = 30
 STORE_SIZE = 300

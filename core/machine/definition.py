@@ -9,11 +9,14 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 from dataclasses import dataclass, field, replace
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from gecent.core.absent import ABSENT, Absent
 from gecent.core.machine.catalogue import STORE_SIZE, catalogue
 from gecent.core.machine.regformat import RegisterFormat
+
+if TYPE_CHECKING:
+    from gecent.core.multiaxis.chain import KinematicChain
 
 OptionValue = float | str
 
@@ -60,6 +63,8 @@ class MachineDefinition:
     feed_table: tuple[float, ...] = field(default=())
     # macros written in the machine file (core/macros/templates.py): Macro objects
     macros: tuple[Any, ...] = field(default=())
+    # a five-axis machine described by data (``[kinematics]``, core/multiaxis/chain.py)
+    kinematics: KinematicChain | None = None
 
     @property
     def registers(self) -> RegisterSet:
@@ -67,9 +72,16 @@ class MachineDefinition:
         return self.heads[0]
 
     @property
+    def multiaxis(self) -> bool:
+        """A multiaxis machine: a transform class (option 116) or ``[kinematics]``."""
+        return self.kinematics is not None or self.number_option(116) != 0
+
+    @property
     def rotary_axes(self) -> int:
-        """The rotary registers a multiaxis machine (option 116) drives through its
-        transform class, head, table and third (0 on any other machine)."""
+        """The rotary registers a multiaxis machine (option 116, or ``[kinematics]``) drives
+        through its transform, head, table and third (0 on any other machine)."""
+        if self.kinematics is not None:
+            return len(self.kinematics.axes)
         if self.number_option(116) == 0:
             return 0
         return sum(1 for cell in ROTARY_CELLS if self.registers.formats[cell] is not None)

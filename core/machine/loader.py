@@ -26,6 +26,7 @@ from gecent.core.machine.catalogue import (
     catalogue,
 )
 from gecent.core.machine.definition import MachineDefinition, OptionValue, RegisterSet
+from gecent.core.machine.kinematics import chain_from_section
 from gecent.core.machine.regformat import RegisterFormat, decode_regfor
 from gecent.core.machine.rules import check_definition
 from gecent.core.machine.schema import HeadSection, MachineFile
@@ -303,6 +304,11 @@ def build_definition(
         output_order=order,
         feed_table=feed_table,
         macros=(*(base.macros if base else ()), *_macros(file, problems)),
+        kinematics=(
+            chain_from_section(file.kinematics, head1, problems.add)
+            if file.kinematics is not None
+            else (base.kinematics if base else None)
+        ),
     )
     problems.raise_if_any()
     errors, warnings = check_definition(definition)

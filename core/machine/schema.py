@@ -34,6 +34,8 @@ Machine Subroutines did (§5.6.6)::
 
 from __future__ import annotations
 
+from typing import Literal
+
 from pydantic import BaseModel, ConfigDict, Field
 
 
@@ -82,6 +84,31 @@ class MacroSection(_Section):
     description: str = ""
 
 
+class KinematicsAxisSection(_Section):
+    """One rotary axis of a five-axis machine described by data (core/multiaxis/chain.py)."""
+
+    letter: Literal["A", "B", "C"]
+    carrier: Literal["table", "head"]
+    direction: tuple[float, float, float]
+    pivot: tuple[float, float, float] = (0.0, 0.0, 0.0)
+    limits: tuple[float, float] | None = None
+    wrap: Literal["limited", "continuous", "rollover"] = "continuous"
+
+
+class KinematicsSection(_Section):
+    """``[kinematics]``: two rotary axes, in register order (6, then 7), table axes from the
+    bed outwards, head axes from the column to the spindle (docs/five-axis.md)."""
+
+    spindle: tuple[float, float, float] = (0.0, 0.0, 1.0)
+    prefer: Literal["positive", "negative"] = "negative"
+    pole_zone: float = Field(default=1.0, ge=0.0, le=45.0)
+    # the control's words for its tool-centre-point mode (option 265 = 1): Fanuc "G43.4"
+    # (H and the offset follow), "G49" to end it; none for LinuxCNC's TCP kinematics
+    tcp_on: str = Field(default="", max_length=20)
+    tcp_off: str = Field(default="", max_length=20)
+    axis: list[KinematicsAxisSection] = Field(min_length=2, max_length=2)
+
+
 class MachineFile(_Section):
     machine: MachineHeader
     tableg: dict[int, int | str] = Field(default_factory=dict)
@@ -95,3 +122,4 @@ class MachineFile(_Section):
     output_order: OutputOrderSection | None = None
     heads: dict[int, HeadSection] = Field(default_factory=dict)
     macros: list[MacroSection] = Field(default_factory=list)
+    kinematics: KinematicsSection | None = None

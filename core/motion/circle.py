@@ -23,7 +23,7 @@ chord tolerance, as is every arc under option 262.
 from __future__ import annotations
 
 from collections.abc import Callable
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from math import acos, asin, atan2, ceil, cos, hypot, pi, sin, tau
 
 from gecent.core.absent import ABSENT
@@ -48,13 +48,16 @@ PLANE_CODES = (18, 19, 20)  # TABLEG: XY, ZX, YZ plane selection (001 L5124-5133
 
 
 @dataclass(slots=True)
-class _Arc:
+class Arc:
     record: Motion
     clockwise: bool
     radius: float
     start: tuple[float, float, float]
     end: tuple[float, float, float]
     helix: bool = False  # the end leaves the plane of the start
+    # the circle's records, the first and its continuations (a multiaxis circle reads the
+    # tool axes of their points)
+    records: list[Motion] = field(default_factory=list)
 
 
 class CentreWords:
@@ -83,7 +86,10 @@ class CircularMotion:
         self.centre: tuple[float, float, float] | None = None  # CIRDAT, rounded to the step
         self.plane = 0
         self.last_plane = 0  # LSTPLN: XY at the start (decision: no plane block before FROM)
-        self.arc: _Arc | None = None
+        self.arc: Arc | None = None
+        # who outputs a finished circle instead of finish's own blocks (a multiaxis
+        # machine's circle goes through its transform class)
+        self.finisher: Callable[[Arc], None] | None = None
         self.centre_moved: tuple[float, float, float] = (0.0, 0.0, 0.0)  # CIRDAT + TRANS
         self.exact_centre: tuple[float, float, float] = (0.0, 0.0, 0.0)  # the record's, unrounded
         self.axis_sense = 0.0  # the circle axis component along the plane normal
@@ -184,13 +190,14 @@ class CircularMotion:
                     record.where,
                 )
         self.centre_moved = moved
-        self.arc = _Arc(
+        self.arc = Arc(
             record,
             clockwise,
             radius,
             (start[0], start[1], start[2]),
             (last[0] + tx, last[1] + ty, last[2] + tz),
             helix,
+            [record],
         )
         return True
 
@@ -203,27 +210,22 @@ class CircularMotion:
         tx, ty, tz = self.state.position.translation
         x, y, z = points[-1]
         self.arc.end = (x + tx, y + ty, z + tz)
+        self.arc.records.append(record)
 
     def finish(self) -> None:
         """The circle is complete: split it at the quadrant boundaries and output it."""
         arc, self.arc = self.arc, None
         assert arc is not None
+        if self.finisher is not None:
+            self.finisher(arc)  # a multiaxis machine's circle (core/motion/multiaxis_circle.py)
+            return
         u, v, normal = PLANES[self.plane]
         c = self.centre_moved
         first = (arc.start[u] - c[u], arc.start[v] - c[v])
         last = (arc.end[u] - c[u], arc.end[v] - c[v])
         ccw = not arc.clockwise
-        entered = _quadrant(first, ccw, first_point=True)
-        left = _quadrant(last, ccw, first_point=False)
-        crossings = (left - entered) % 4 if ccw else (entered - left) % 4
-        if crossings == 0 and _long_way(first, last, ccw):
-            crossings = 4
-        leave = LEAVE_CCLW if ccw else LEAVE_CLW
         points: list[tuple[float, float, float]] = []
-        quadrant = entered
-        for _ in range(crossings):
-            du, dv = leave[quadrant]
-            quadrant = quadrant % 4 + 1 if ccw else (quadrant + 2) % 4 + 1
+        for du, dv in quadrant_crossings(first, last, arc.clockwise):
             point = [0.0, 0.0, 0.0]
             point[u] = c[u] + du * arc.radius
             point[v] = c[v] + dv * arc.radius
@@ -247,13 +249,13 @@ class CircularMotion:
                 error.where = arc.record.where
             raise
 
-    def _chords(self, arc: _Arc, first: tuple[float, float], last: tuple[float, float]) -> None:
+    def _chords(self, arc: Arc, first: tuple[float, float], last: tuple[float, float]) -> None:
         """The arc (or helix) as straight moves: equal angles, each chord within the
         tolerance of the arc (option 262, or one step) and no longer than option 4; the
         normal axis moves in proportion; the last point is the record's own."""
         u, v, normal = PLANES[self.plane]
         tolerance = self.chord_tolerance if self.chord_tolerance > 0 else self.step
-        sweep = _sweep(first, last, arc.clockwise, self.step)
+        sweep = arc_sweep(first, last, arc.clockwise, self.step)
         radius = arc.radius
         widest = 2 * acos(1 - tolerance / radius) if tolerance < radius else pi
         if radius > 0 and 2 * radius > self.depmax:  # a chord of 2r sin(a/2) within option 4
@@ -310,7 +312,7 @@ class CircularMotion:
 
     def _segment(
         self,
-        arc: _Arc,
+        arc: Arc,
         point: tuple[float, float, float],
         code: Code,
         index: int,
@@ -324,15 +326,15 @@ class CircularMotion:
         departures = [position.present[a] - position.previous[a] for a in range(3)]
         if not any(departures):
             return
-        circular = True
-        if index in (0, count - 1) and (departures[u] == 0 or departures[v] == 0):
-            circular = False  # zero departure at the start or end (001 L5284-5293)
-        if circular and index == count - 1 and count >= 2:
-            c = self.centre_moved
-            before = points[index - 1]
-            axis = u if abs(before[u] - c[u]) > abs(before[v] - c[v]) else v
-            if abs(arc.end[axis] - c[axis]) >= abs(before[axis] - c[axis]):
-                circular = False  # apparent reversal at the end point (001 L5355-5383)
+        c = self.centre_moved
+        before = points[index - 1] if index else arc.start
+        circular = not goes_linear(
+            index,
+            count,
+            (departures[u], departures[v]),
+            (before[u] - c[u], before[v] - c[v]),
+            (arc.end[u] - c[u], arc.end[v] - c[v]),
+        )
         block = Block.motion(
             code if circular else Code.LINEAR,
             arc.record.number,
@@ -357,7 +359,7 @@ class CircularMotion:
 
     def _whole(
         self,
-        arc: _Arc,
+        arc: Arc,
         code: Code,
         first: tuple[float, float],
         last: tuple[float, float],
@@ -371,7 +373,7 @@ class CircularMotion:
         position.present_part[:3] = list(arc.end)
         position.present[:3] = [to_steps(value, step) for value in arc.end]
         departures = [position.present[a] - position.previous[a] for a in range(3)]
-        sweep = _sweep(first, last, arc.clockwise, step)
+        sweep = arc_sweep(first, last, arc.clockwise, step)
         if sweep < tau and not any(departures):
             return  # a short arc within one step: no move (RETURN = -1, 001 L4283-4290)
         block = Block.motion(
@@ -472,7 +474,7 @@ class CircularMotion:
         return None
 
 
-def _sweep(
+def arc_sweep(
     first: tuple[float, float], last: tuple[float, float], clockwise: bool, step: float
 ) -> float:
     """The angle an arc turns from ``first`` to ``last`` (offsets from the centre) in its
@@ -481,6 +483,46 @@ def _sweep(
         return tau  # back where it started: a full circle (no CL arc has no length)
     turn = atan2(last[1], last[0]) - atan2(first[1], first[0])
     return (-turn if clockwise else turn) % tau
+
+
+def quadrant_crossings(
+    first: tuple[float, float], last: tuple[float, float], clockwise: bool
+) -> list[tuple[int, int]]:
+    """QUADNT and QUADET (001 L4850-5100): the axis crossings, as (du, dv) on the unit
+    circle, of an arc from ``first`` to ``last`` (offsets from its centre) in path order;
+    an arc that starts and ends in one quadrant with the end behind the start goes round."""
+    ccw = not clockwise
+    entered = _quadrant(first, ccw, first_point=True)
+    left = _quadrant(last, ccw, first_point=False)
+    crossings = (left - entered) % 4 if ccw else (entered - left) % 4
+    if crossings == 0 and _long_way(first, last, ccw):
+        crossings = 4
+    leave = LEAVE_CCLW if ccw else LEAVE_CLW
+    out: list[tuple[int, int]] = []
+    quadrant = entered
+    for _ in range(crossings):
+        out.append(leave[quadrant])
+        quadrant = quadrant % 4 + 1 if ccw else (quadrant + 2) % 4 + 1
+    return out
+
+
+def goes_linear(
+    index: int,
+    count: int,
+    departures: tuple[int, int],
+    before: tuple[float, float],
+    end: tuple[float, float],
+) -> bool:
+    """PROCQD's special cases (001 L5214-5383): the first or last of ``count`` quadrant
+    segments with a zero in-plane departure (steps), or a last segment whose end looks
+    behind its start (``before`` and ``end``: offsets from the centre), goes out linear."""
+    if index in (0, count - 1) and (departures[0] == 0 or departures[1] == 0):
+        return True  # zero departure at the start or end (001 L5284-5293)
+    if index == count - 1 and count >= 2:
+        axis = 0 if abs(before[0]) > abs(before[1]) else 1
+        if abs(end[axis]) >= abs(before[axis]):
+            return True  # apparent reversal at the end point (001 L5355-5383)
+    return False
 
 
 def _quadrant(point: tuple[float, float], ccw: bool, *, first_point: bool) -> int:

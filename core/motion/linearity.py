@@ -52,10 +52,11 @@ class LinearityTest:
         refused as a too-fine tolerance (the run's segment bound)."""
         cone = None if rule.cone is None else radians(rule.cone)
         out: list[Point] = []
-        end_machine = self.machine(end, start_machine)
         met = True
         while met:
-            target, target_machine = end, end_machine
+            # the end's machine point from where the move stands now: a machine with two
+            # ways to a tool axis takes the one nearest the last point (core/multiaxis/chain)
+            target, target_machine = end, self.machine(end, start_machine)
             inserted: Point | None = None
             for _ in range(MAX_HALVINGS):
                 half = _midpoint(start, target)

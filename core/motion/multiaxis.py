@@ -22,7 +22,7 @@ A point with three values keeps the tool axis in force (the last one given; +Z a
 from __future__ import annotations
 
 from collections.abc import Callable
-from math import radians, sqrt
+from math import acos, ceil, degrees, radians, sqrt
 
 import numpy as np
 from gecent.core.cl.records import Motion, MotionSubtype
@@ -34,6 +34,7 @@ from gecent.core.motion.linearity import LinearityLimit, LinearityTest
 from gecent.core.motion.rotary import UNITS_PER_DEGREE
 from gecent.core.motion.rounding import to_steps
 from gecent.core.motion.segments import segment_count, segment_place, segments
+from gecent.core.multiaxis.chain import KinematicChain, Unreachable
 from gecent.core.multiaxis.transform import Kinematics, TransformClass
 from gecent.core.output.block import Block, Code
 from gecent.core.state import PostState
@@ -81,7 +82,18 @@ class MultiaxisMotion:
                     f"{len(self.columns)} rotary axes, but register {cell} has no format",
                     SourcePosition(machine.origin),
                 )
+        # a five-axis machine by data (core/multiaxis/chain.py, docs/five-axis.md): the reach
+        # is the tool's length where the head swings it (LOADTL LENGTH), else none (the
+        # control's length offset makes the tip the controlled point)
+        self.chain = transform if isinstance(transform, KinematicChain) else None
+        if self.chain is not None:
+            self.kinematics = Kinematics(reach=0.0, options=self.kinematics.options)
         self.linearity = LinearityTest(transform, self.kinematics)
+        self.limited = frozenset(
+            axis.column for axis in (self.chain.axes if self.chain else ()) if axis.limits
+        )
+        self.modern_absolute = machine.number_option(251) == 1
+        self.where: SourcePosition | None = None
         self.tool_axis: tuple[float, float, float] = (0.0, 0.0, 1.0)
         self.machine_previous = np.zeros((1, 6))  # the last machine point (radians)
         # each rotary axis's angle so far, unwrapped (degrees), and in rotary steps
@@ -93,6 +105,7 @@ class MultiaxisMotion:
     # -- records -----------------------------------------------------------------------
 
     def record(self, record: Motion) -> None:
+        self.where = record.where
         if record.subtype is MotionSubtype.FROM:
             self._from(record)
         elif record.subtype is MotionSubtype.GODLTA:
@@ -122,9 +135,14 @@ class MultiaxisMotion:
     def _machine(self, part: PartPoint) -> tuple[list[int], list[int], bool]:
         """GEOM5: the machine point in steps (linear) and the rotary axes' unwrapped
         positions in rotary steps, and whether the point is singular."""
-        result = self.transform.direct(
-            np.array([part]), self.kinematics, previous=self.machine_previous
-        )
+        if self.chain is not None and self.chain.needs_tool_length:
+            self._tool_length()
+        try:
+            result = self.transform.direct(
+                np.array([part]), self.kinematics, previous=self.machine_previous
+            )
+        except Unreachable as exc:
+            raise InputError(str(exc), self.where) from None
         axes = result.axes[0]
         self.machine_previous = result.axes
         linear = [to_steps(float(axes[a]), self.step) for a in range(3)]
@@ -132,10 +150,19 @@ class MultiaxisMotion:
         raw = axes.copy()
         for index, column in enumerate(self.columns):
             degrees = float(np.degrees(axes[column]))
-            turn = (degrees - self.angles[index] + 180.0) % 360.0 - 180.0  # the shorter way
-            self.angles[index] += turn
+            if column in self.limited:  # within the axis's travel, as the chain chose
+                self.angles[index] = degrees
+            else:
+                turn = (degrees - self.angles[index] + 180.0) % 360.0 - 180.0  # the shorter way
+                self.angles[index] += turn
             raw[column] = np.radians(self.angles[index])
             rotary.append(round(self.angles[index] * self.per_degree / self.rotary_step))
+        if self.chain is not None and not self.chain.tool_centre_point:
+            # the slides for the angles as punched: the tip lands on the CL point to the
+            # slides' own step, not off it by the angles' rounding times the tip's radius
+            punched = [radians(steps * self.rotary_step / self.per_degree) for steps in rotary]
+            slides = self.chain.slides(part[:3], (punched[0], punched[1]), self.kinematics.reach)
+            linear = [to_steps(v, self.step) for v in slides]
         self.machine_raw = raw  # (unrounded, the angles unwrapped: LINRTY's machine point)
         singular = bool(result.singular[0]) if result.singular.size else False
         return linear, rotary, singular
@@ -160,13 +187,30 @@ class MultiaxisMotion:
         self.rotary_previous = rotary
         self.emit(block)
 
-    def _goto(self, record: Motion, point: tuple[float, ...]) -> None:
+    def goline(self, record: Motion, point: tuple[float, ...], *, tested: bool = False) -> None:
+        """GOLINE for a point another element makes (ROTREF's move, a multiaxis circle's
+        chords, core/motion/multiaxis_rotate.py, multiaxis_circle.py): ``point`` as a CL
+        point (before TRANS); ``tested``: linearity-tested under LINTOL/OFF too."""
+        self._goto(record, point, tested)
+
+    def _goto(self, record: Motion, point: tuple[float, ...], tested: bool = False) -> None:
+        if self.chain is None:
+            self._goto_moves(record, point, tested)
+            return
+        axis = tuple(self.state.position.previous_part[3:6])
+        before = list(self.rotary_previous)
+        self._goto_moves(record, point, tested)
+        self._pole(record, axis, before)
+
+    def _goto_moves(self, record: Motion, point: tuple[float, ...], tested: bool) -> None:
         part = self._part(record, point)
+        if self.singular and self.chain is not None and not self.chain.tool_centre_point:
+            self._turn_at_pole(record, part)
         rule = self.state.linearity
         if (
             rule.radius > 0.0
             and not self.state.feed.rapid_ipm
-            and (rule.one_point_records or len(record.points) > 1)
+            and (rule.one_point_records or len(record.points) > 1 or tested)
             and not self.singular
             and not self._singular(part)
         ):
@@ -198,13 +242,91 @@ class MultiaxisMotion:
     def _singular(self, part: PartPoint) -> bool:
         """The class leaves an angle of this point undetermined (its tool axis along the
         axis that angle turns about)."""
-        result = self.transform.direct(np.array([part]), self.kinematics, self.machine_previous)
+        try:
+            result = self.transform.direct(np.array([part]), self.kinematics, self.machine_previous)
+        except Unreachable as exc:
+            raise InputError(str(exc), self.where) from None
         return bool(result.singular.any()) if result.singular.size else False
 
+    def _tool_length(self) -> None:
+        """Slides computed for a head that swings the tool: the tool's length (LOADTL
+        LENGTH) is part of the reach from the head's pivot to the tip."""
+        length = self.state.tool.length
+        if length is None:
+            raise InputError(
+                "this five-axis machine's slides are computed for the tool the head swings "
+                "(option 265 = 0): give the tool's length, LOADTL/n,LENGTH,l",
+                self.where,
+            )
+        if length != self.kinematics.reach:
+            self.kinematics = Kinematics(reach=length, options=self.kinematics.options)
+            self.linearity = LinearityTest(self.transform, self.kinematics)
+
     def _move(self, record: Motion, part: PartPoint) -> None:
-        position = self.state.position
         linear, rotary, singular = self._machine(part)
         self.singular = singular
+        self._reach(record, part, linear, rotary)
+
+    def _turn_at_pole(self, record: Motion, part: PartPoint) -> None:
+        """Leaving the pole, where the tool lies along an axis whose angle it left open:
+        that axis turns to its new angle first, the tool tip held where it is (the slides
+        follow the part round), so the move after it does not sweep the part under the
+        tool."""
+        assert self.chain is not None
+        index = self.chain.axes.index(self.chain.pole)
+        column = self.columns[index]
+        try:
+            result = self.transform.direct(np.array([part]), self.kinematics, self.machine_previous)
+        except Unreachable as exc:
+            raise InputError(str(exc), self.where) from None
+        if bool(result.singular[0]):
+            return  # (from the pole to the pole: nothing to turn)
+        wanted = float(np.degrees(result.axes[0, column]))
+        if column not in self.limited:
+            wanted = self.angles[index] + (wanted - self.angles[index] + 180.0) % 360.0 - 180.0
+        target = round(wanted * self.per_degree / self.rotary_step)
+        if target == self.rotary_previous[index]:
+            self.singular = False  # the angle kept is the move's own: testable
+            return
+        rotary = list(self.rotary_previous)
+        rotary[index] = target
+        at = self.state.position.previous_part
+        start: PartPoint = (at[0], at[1], at[2], at[3], at[4], at[5])
+        begin, total = self.rotary_previous[index], rotary[index] - self.rotary_previous[index]
+        pieces = 1
+        rule = self.state.linearity
+        if rule.radius > 0.0 and not self.state.feed.rapid_ipm:
+            # LINTOL: the slides follow the tip's circle about the axis in chords within r
+            angles = self._radians(self.rotary_previous)
+            radius = self.chain.radius_about(self.chain.pole, start[:3], angles)
+            if radius > rule.radius:
+                per_piece = 2.0 * acos(1.0 - rule.radius / radius)
+                turn = abs(total) * self.rotary_step / self.per_degree
+                pieces = max(1, ceil(radians(turn) / per_piece))
+                check_segments(pieces, self.state.max_segments, record.where, "move")
+        slides: tuple[float, float, float] = (0.0, 0.0, 0.0)
+        for piece in range(1, pieces + 1):
+            turned = list(self.rotary_previous)
+            turned[index] = begin + round(total * piece / pieces)
+            slides = self.chain.slides(start[:3], self._radians(turned), self.kinematics.reach)
+            self._reach(record, start, [to_steps(v, self.step) for v in slides], turned)
+        # the machine stands at the turned angle now: no longer at an open one
+        degrees_now = target * self.rotary_step / self.per_degree
+        self.angles[index] = degrees_now
+        for row in (self.machine_previous[0], self.machine_raw):
+            row[column] = radians(degrees_now)
+            row[0:3] = slides
+        self.singular = False
+
+    def _radians(self, rotary: list[int]) -> tuple[float, float]:
+        """The chain's two angles (radians) of rotary positions in rotary steps."""
+        first, second = (radians(s * self.rotary_step / self.per_degree) for s in rotary)
+        return (first, second)
+
+    def _reach(self, record: Motion, part: PartPoint, linear: list[int], rotary: list[int]) -> None:
+        """The blocks from the last machine point to this one (segmented by DEPMAX and
+        ROTMAX)."""
+        position = self.state.position
         departures = [linear[a] - position.previous[a] for a in range(3)]
         turns = [r - p for r, p in zip(rotary, self.rotary_previous, strict=True)]
         if not any(departures) and not any(turns):
@@ -216,6 +338,14 @@ class MultiaxisMotion:
         path = sqrt(sum((part[a] - previous_part[a]) ** 2 for a in range(3)))
         reached = list(position.previous[:3])
         pieces = segments(departures + turns, count) if count > 1 else (tuple(departures + turns),)
+        angles = list(self.rotary_previous)
+        # G93 on a modern control: a move the slides make while the tool turns (the control
+        # would take F over the slides' and angles' travel), or a turn alone
+        timed = (
+            self.chain is not None
+            and any(turns)
+            and (not self.chain.tool_centre_point or path == 0.0)
+        )
         for index, piece in enumerate(pieces):
             linear_piece = piece[:3]
             for axis, steps in enumerate(linear_piece):
@@ -225,9 +355,15 @@ class MultiaxisMotion:
             )
             for cell, steps in zip(self.cells, piece[3:], strict=True):
                 block.cells[cell] = steps * self.rotary_step
+            if self.modern_absolute:
+                angles = [a + t for a, t in zip(angles, piece[3:], strict=True)]
+                block.angles = tuple(angles)
+            block.inverse_time = timed
             block.feed_length = (
                 path / count
-                if path > 0.0
+                if path > 0.0 and self.chain is None
+                else max(path / count, self._turn_length(list(piece[3:]), list(linear_piece)))
+                if self.chain is not None
                 else self._turn_length(list(piece[3:]), list(linear_piece))
             )
             block.segment = segment_place(index, count)
@@ -245,6 +381,13 @@ class MultiaxisMotion:
         FEDLIM counts a rotary axis (001 L12225-12300)."""
         machine = self.state.machine
         longest = sqrt(sum((s * self.step) ** 2 for s in slides))
+        if self.chain is not None:
+            swept = self.chain.swing(
+                [t * self.rotary_step / self.per_degree for t in turns],
+                machine.number_option(112),
+                machine.number_option(128),
+            )
+            return max(longest, swept)
         for cell, steps in zip(self.cells, turns, strict=True):
             radius = machine.number_option(128 if cell == 6 else 112)
             degrees = abs(steps) * self.rotary_step / self.per_degree
@@ -254,3 +397,32 @@ class MultiaxisMotion:
                 "a turn of the tool alone on a machine without its radius (options 112, 128)"
             )
         return longest
+
+    def _pole(self, record: Motion, start: tuple[float, ...], before: list[int]) -> None:
+        """A move whose tool axis passes near the pole (along the axis whose angle it then
+        leaves open) swings that axis fast: the warning names how near and how far."""
+        assert self.chain is not None
+        pole = self.chain.pole
+        direction = pole.direction
+        part = self.state.position.previous_part
+        nearest = 180.0
+        for n in range(17):
+            t = n / 16
+            v = [start[a] + t * (part[3 + a] - start[a]) for a in range(3)]
+            length = sqrt(sum(c * c for c in v)) or 1.0
+            cosine = abs(sum(v[a] * direction[a] for a in range(3))) / length
+            nearest = min(nearest, degrees(acos(min(1.0, cosine))))
+        if nearest > self.chain.pole_zone:
+            return
+        index = self.chain.axes.index(pole)
+        swing = (
+            abs(self.rotary_previous[index] - before[index]) * self.rotary_step / self.per_degree
+        )
+        if swing >= 1.0:
+            self.warn(
+                Diagnostic(
+                    f"TOOL AXIS WITHIN {nearest:.3f} DEGREES OF THE POLE OF {pole.letter}: "
+                    f"{pole.letter} TURNS {swing:.3f} DEGREES ON THIS MOVE",
+                    record.where,
+                )
+            )

@@ -64,11 +64,22 @@ class MachinePoints:
 class TransformClass(Protocol):
     """A multiaxis transform class (CLASSn, n = option 116)."""
 
-    number: int
-    name: str
-    section: str
-    structure: str  # the axes in the manual's I(P,T,R) notation, e.g. "5(3,0,2)"
-    rotary: tuple[int, ...]  # the machine columns it drives among A, B, C (3, 4, 5)
+    # (read-only: a class may give them as attributes or as properties)
+    @property
+    def number(self) -> int: ...
+    @property
+    def name(self) -> str: ...
+    @property
+    def section(self) -> str: ...
+    @property
+    def structure(self) -> str:
+        """The axes in the manual's I(P,T,R) notation, e.g. "5(3,0,2)"."""
+        ...
+
+    @property
+    def rotary(self) -> tuple[int, ...]:
+        """The machine columns it drives among A, B, C (3, 4, 5)."""
+        ...
 
     def direct(
         self, part: Points, kinematics: Kinematics, previous: Points | None = None

@@ -89,6 +89,10 @@ class Block:
     # None for a block not cut from a longer move (option 17's digit 2 prints only those two)
     segment: tuple[bool, bool] | None = None
     f_format: float | None = None  # REGFOR(11) for this block under inverse time
+    # a five-axis move on a modern control: the rotary axes' positions reached (rotary
+    # steps, unwrapped), and whether its F is inverse time (G93)
+    angles: tuple[int, ...] | None = None
+    inverse_time: bool = False
     # set by the output element: the printed value of each register output, and the tape line
     words: tuple[tuple[int, str], ...] = ()
     punch: str | None = None

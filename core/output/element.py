@@ -26,12 +26,14 @@ from gecent.core.output.block import Block, Code
 from gecent.core.output.marks import stand_in
 from gecent.core.output.modern import (
     CL_PLANES,
+    INVERSE_TIME,
     SECOND_G,
     TOOL_LENGTH_ON,
     TOOL_LENGTH_REGISTER,
     ModernControl,
     machine_planes,
 )
+from gecent.core.output.program import ModernProgram
 from gecent.core.output.words import Word, WordFormatter
 from gecent.core.state import SPINDLE_COMMAND, PostState
 
@@ -63,7 +65,7 @@ NOT_AVAILABLE = "REQUESTED MISCELLANEOUS FUNCTION CODE IS NOT AVAILABLE ON THIS 
 NON_MOTION_DWELL = frozenset({Code.NONMOTION, Code.G_ONLY, Code.END})
 
 
-class OutputElement:
+class OutputElement(ModernProgram):
     def __init__(self, state: PostState) -> None:
         machine = state.machine
         self.state = state
@@ -116,6 +118,18 @@ class OutputElement:
         self.end_code: float | Absent = ABSENT if end_code is None else end_code
         length_code = machine.g_code(TOOL_LENGTH_ON)
         self.tool_length_code: float | Absent = ABSENT if length_code is None else length_code
+        # a five-axis machine by data (docs/five-axis.md): its rotary step, G93, and the
+        # control's tool-centre-point words in place of G43 (option 265 = 1)
+        self.rotary_step = machine.number_option(119) or 0.0001
+        self.inverse_time_code = machine.g_code(INVERSE_TIME) is not None
+        chain = machine.kinematics
+        tcp = chain is not None and machine.number_option(265) == 1
+        self.tcp_on = chain.tcp_on if tcp and chain is not None else ""
+        self.tcp_off = chain.tcp_off if tcp and chain is not None else ""
+        self.tcp_active = False
+        # slides computed for a head that swings the tool: the control's length offset
+        # along Z would be wrong at any tilt (the tool's length is in the slides)
+        self.no_length_offset = chain is not None and not tcp and bool(chain.heads)
         # option 25 < 0: each axis's own feed limits (FEDLIM); a multiaxis machine's
         # rotary axes have theirs after the linear ones
         self.feed_limits = FeedLimits(machine) if machine.number_option(25) < 0 else None
@@ -157,7 +171,11 @@ class OutputElement:
         if state.tool.length_pending and block.code in MOVING_CODES:
             # option 263 = 1: G43 H with the first move after a tool change, in a block of
             # its own before an arc or a cycle (G43 goes with a straight move)
-            if block.code is Code.LINEAR:
+            if self.no_length_offset:
+                state.tool.length_pending = False
+            elif self.tcp_on:
+                self._tcp_block(block.record)
+            elif block.code is Code.LINEAR:
                 state.tool.length_pending = False
                 block.cells[SECOND_G] = self.tool_length_code
                 block.cells[TOOL_LENGTH_REGISTER] = float(state.tool.offset or 0)
@@ -192,6 +210,8 @@ class OutputElement:
                 state.pending.rpm = state.spindle.speed
         block.cells[12] = state.pending.spindle
         block.cells[14] = state.pending.m_code
+        if self.tcp_active and self.tcp_off and block.cells[14] == self.end_code:
+            self._tcp_off(block.record)  # the control's tool centre point ends first
         if state.pending.spindle is not ABSENT and state.pending.rpm is not None:
             block.cells[20] = state.pending.rpm  # the speed in RPM, for the listing
         state.pending.rpm = None
@@ -200,16 +220,6 @@ class OutputElement:
         # numbered last: a block the move needs first (G95, a plane) takes the N before it
         block.cells[1] = self._sequence_number(block)
         self._emit(block)
-
-    def tool_length_block(self, record: int | None) -> None:
-        """G43 H in a block of its own (option 263 = 1), when the tool's first move cannot
-        carry it (an arc, a cycle) or cutter compensation comes before that move."""
-        state = self.state
-        state.tool.length_pending = False
-        block = Block(Code.G_ONLY, record)
-        block.cells[2] = self.tool_length_code
-        block.cells[TOOL_LENGTH_REGISTER] = float(state.tool.offset or 0)
-        self._output(block)
 
     def _sequence_number(self, block: Block) -> float | Absent:
         """N: the CL record number (option 143 = 0), or the SEQNO series, or none after
@@ -411,49 +421,6 @@ class OutputElement:
         self.cut_minutes += block.cut_minutes
         self.modern.at = list(block.position or ())[: self.modern.axes] or None
 
-    def _direct_feed(self, block: Block) -> float:
-        """Option 254: F is the feed itself, per revolution under G95 when FEDRAT gave it so;
-        a change of mode goes out first in a block of its own."""
-        feed = self.state.feed
-        mode = self.modern.feed_mode_code(feed.per_revolution)
-        if mode is not None:
-            g_block = Block(Code.G_ONLY, block.record)
-            g_block.cells[2] = mode
-            self._output(g_block)
-            self.words.previous_f = ABSENT  # the control drops F with its feed mode
-        return feed.per_revolution_value if feed.per_revolution else feed.ipm
-
-    def _start_block(self, record: int | None) -> None:
-        """Option 258: the modal codes the program starts from, before its first block."""
-        modern = self.modern
-        modern.started = True
-        plane: int | None = 18  # TABLEG(18): XY
-        if self.state.machine.number_option(252):
-            plane = machine_planes(self.words.shuffle[:3])[0][0]
-        for comment in self.state.header:  # option 264: the tool list
-            text = Block(Code.INSERT, record, comment)
-            text.keep_blanks = True
-            self.emit(text)
-        codes = modern.start_codes(plane)
-        g = next((f for f in self.words.formatters if f.location == 2), None)
-        if not codes or g is None:
-            return
-        words = [g.letter + g.format(code).punched for code in codes]
-        if self.state.machine.number_option(252) == 2:
-            words.append("G90.1")  # arc centres absolute (LinuxCNC; option 252 = 2)
-        block = Block(Code.INSERT, record, " ".join(words))
-        block.keep_blanks = bool(self.separator)
-        self.emit(block)
-
-    def finish_program(self, record: int | None) -> None:
-        """Option 258 at FINI: the end-of-program code, unless END has given it since the
-        last move."""
-        if not self.modern.frame or self.modern.ended or self.end_code is ABSENT:
-            return
-        self.flush_m(record)
-        self.state.pending.m_code = self.end_code
-        self._output(Block(Code.END, record))
-
     def _position(self, block: Block) -> None:
         """POSIT and POSFED (001 L34780-34878): an absolute positioning block's F command
         from the feed type, or the rapid marker: option 45's command (none when negative)
@@ -552,6 +519,8 @@ class OutputElement:
                 () if block.code not in CIRCLE_CODES else CL_PLANES[abs(int(block.code)) - 10][:2]
             )
             modern.place(block, block.position, keep)
+            if block.angles is not None:
+                modern.place_rotary(block, block.angles, self.rotary_step)
             placed = True
         if block.code not in UNSHUFFLED:
             self.words.shuffle_block(block)

@@ -17,7 +17,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 
 from gecent.core.absent import ABSENT
-from gecent.core.machine.definition import MachineDefinition
+from gecent.core.machine.definition import ROTARY_CELLS, MachineDefinition
 from gecent.core.output.block import Block
 from gecent.core.state import Numbering
 
@@ -27,6 +27,7 @@ INCH_UNITS, METRIC_UNITS = 121, 122
 PER_MINUTE, PER_REVOLUTION = 123, 124
 RETURN_INITIAL, RETURN_R_PLANE = 125, 126
 RAPID_TRAVERSE = 127
+INVERSE_TIME = 131  # G93 (a five-axis move that turns a rotary axis)
 TOOL_LENGTH_ON, TOOL_LENGTH_OFF, WORK_OFFSET = 128, 129, 130  # G43, G49, G54
 # REGSTR: H (tool length offset), D (cutter radius offset), a second G word (G43 with a move)
 TOOL_LENGTH_REGISTER, CUTTER_REGISTER, SECOND_G = 22, 23, 24
@@ -70,9 +71,12 @@ class ModernControl:
         "direct_feed",
         "ended",
         "frame",
+        "inverse_time",
         "machine",
         "per_revolution",
         "rapid_code",
+        "rollover",
+        "rotary_at",
         "started",
         "step",
     )
@@ -87,6 +91,12 @@ class ModernControl:
         self.rapid_code = machine.g_code(RAPID_TRAVERSE)
         self.at: list[int] | None = None  # the control's position, CL axis order, steps
         self.per_revolution: bool | None = None  # the G94/G95 mode output last
+        self.inverse_time = False  # G93 is in force
+        # a five-axis machine's rotary axes: their positions (rotary steps, unwrapped), and
+        # which the control takes modulo a turn (rollover)
+        self.rotary_at: list[int] | None = None
+        chain = machine.kinematics
+        self.rollover = tuple(a.wrap == "rollover" for a in chain.axes) if chain else ()
         self.started = False
         self.ended = False
 
@@ -116,14 +126,35 @@ class ModernControl:
         codes = [machine.g_code(location) for location in locations if location is not None]
         return [code for code in codes if code is not None]
 
-    def feed_mode_code(self, per_revolution: bool) -> float | None:
-        """G94 or G95 when the feed mode changes (None: no change, or no such code)."""
+    def feed_mode_code(self, per_revolution: bool, inverse_time: bool = False) -> float | None:
+        """G94, G95 or G93 when the feed mode changes (None: no change, or no such code)."""
         if self.per_revolution is None:
             self.per_revolution = False  # the start block set G94
-        if per_revolution == self.per_revolution:
+        if inverse_time:
+            if self.inverse_time:
+                return None
+            self.inverse_time = True
+            return self.machine.g_code(INVERSE_TIME)
+        if per_revolution == self.per_revolution and not self.inverse_time:
             return None
         self.per_revolution = per_revolution
+        self.inverse_time = False
         return self.machine.g_code(PER_REVOLUTION if per_revolution else PER_MINUTE)
+
+    def place_rotary(self, block: Block, angles: tuple[int, ...], step: float) -> None:
+        """A five-axis move's absolute angles (rotary steps, unwrapped): an axis the control
+        is at already is left out; a rollover axis is given within one turn (0 to 360)."""
+        at = self.rotary_at
+        for index, steps in enumerate(angles):
+            cell = ROTARY_CELLS[index]
+            if at is not None and at[index] == steps:
+                block.cells[cell] = ABSENT
+                continue
+            value = steps * step
+            if index < len(self.rollover) and self.rollover[index]:
+                value %= 360.0
+            block.cells[cell] = value
+        self.rotary_at = list(angles)
 
     def place(self, block: Block, reached: tuple[int, ...], keep: tuple[int, ...] = ()) -> None:
         """Absolute words: cells 3.. hold the positions reached, in CL axis order before
@@ -141,6 +172,7 @@ class ModernControl:
     def forget(self) -> None:
         """After a tool change the next move states every axis."""
         self.at = None
+        self.rotary_at = None
 
 
 def program_start(machine: MachineDefinition, numbering: Numbering) -> list[str]:

@@ -3,7 +3,7 @@ core/tool.py, core/motion/rotary.py)."""
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Protocol, runtime_checkable
 
 from gecent.core.cl.records import Statement
 from gecent.core.errors import NotYetSupported
@@ -11,6 +11,7 @@ from gecent.core.statements.feed import feed_per_revolution
 
 if TYPE_CHECKING:
     from gecent.core.dispatch.context import Post
+    from gecent.core.motion.multiaxis import MultiaxisMotion
 
 
 def spindl(run: Post, statement: Statement) -> None:
@@ -28,19 +29,29 @@ def turret(run: Post, statement: Statement) -> None:
 
 
 def rotate(run: Post, statement: Statement) -> None:
-    """ROTATE/TABLE|HEAD: an incremental rotary system on a contouring machine (ROTABI);
-    absolute systems belong to positioning machines (ROTABA)."""
+    """ROTATE/TABLE|HEAD: an incremental rotary system on a contouring machine (ROTABI;
+    on a multiaxis machine core/motion/multiaxis_rotate.py); absolute systems belong to
+    positioning machines (ROTABA)."""
     if run.machine.number_option(1) != 0:
         raise NotYetSupported("ROTATE on a positioning machine (ROTABA)", statement.where)
-    if run.machine.number_option(116) != 0:
-        # the table's turn changes the part frame the transform class works in (ROTREF,
-        # option 198, manual §3.4.7.2): posting it as a plain rotary block would leave the
-        # next multiaxis point on a stale angle
-        raise NotYetSupported(
-            "ROTATE on a multiaxis machine (ROTREF and option 198, manual §3.4.7.2)",
-            statement.where,
-        )
+    if run.machine.multiaxis:
+        # ROTABI's multiaxis branch (manual §3.4.7.2): the transform class's rotary axis
+        # turns, and the part frame with it or not (ROTREF, option 198)
+        from gecent.core.motion.multiaxis_rotate import rotate as rotate_multiaxis
+
+        if not isinstance(run, _Multiaxis):
+            raise NotYetSupported("ROTATE on a multiaxis machine in this context", statement.where)
+        rotate_multiaxis(run.multiaxis, statement)
+        return
     run.rotary.statement(statement)
+
+
+@runtime_checkable
+class _Multiaxis(Protocol):
+    """A run with a multiaxis element (core/run.py's)."""
+
+    @property
+    def multiaxis(self) -> MultiaxisMotion: ...
 
 
 HANDLERS = {

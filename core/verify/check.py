@@ -3,7 +3,7 @@ and its report (docs/verify.md)."""
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from collections.abc import Iterable, Iterator
 from dataclasses import dataclass, field
 
 from gecent.core.cl.records import Record, Statement
@@ -13,6 +13,13 @@ from gecent.core.macros.dialect import choose_dialect, read_in_dialect, read_raw
 from gecent.core.plugins import PluginSet
 from gecent.core.verify.clpath import cl_path
 from gecent.core.verify.compare import AXIS_NAMES, Comparison, compare
+from gecent.core.verify.fiveaxis import (
+    DEFAULT_AXIS_TOLERANCE,
+    FiveAxisKinematics,
+    FiveAxisVerification,
+    cl_poses,
+    compare_poses,
+)
 from gecent.core.verify.rs274 import Interpretation, interpret, offset_words
 
 DEFAULT_TOLERANCE_MM = 0.001
@@ -115,6 +122,56 @@ def cl_as_posted(
     return read_in_dialect(cl_file, plugins, spoken, None, machine.number_option(138) == 1)
 
 
+def verify_five_axis(
+    tape_path: str,
+    records: Iterable[Record],
+    machine: MachineDefinition,
+    tolerance_mm: float,
+    axis_tolerance: float = DEFAULT_AXIS_TOLERANCE,
+) -> FiveAxisVerification:
+    """A five-axis machine by data: the tape's moves carried back to the part through the
+    machine's kinematics (core/verify/fiveaxis.py)."""
+    chain = machine.kinematics
+    assert chain is not None
+    try:
+        poses, lengths = cl_poses(records, machine)
+    except ValueError as exc:
+        problem = f"{exc}, which the post does not follow"
+        reading = Interpretation([], "MM", None, None)
+        return FiveAxisVerification(
+            machine, reading, None, tolerance_mm, axis_tolerance, "mm", [], problem
+        )
+    # rs274 reads a tool-centre-point control's positions as written: G43.4 as G43
+    tcp = machine.number_option(265) == 1 and chain.tcp_on
+    reading = interpret(tape_path, replace={chain.tcp_on: "G43"} if tcp else None)
+    unit = "in" if reading.units == "INCHES" else "mm"
+    tolerance = tolerance_mm / 25.4 if unit == "in" else tolerance_mm
+    tolerance = max(tolerance, machine.number_option(14) * (0.5 + 1e-9))
+    with open(tape_path, encoding="ascii", errors="replace") as tape:
+        lines = tape.read().splitlines()
+    if reading.error is not None:
+        return FiveAxisVerification(machine, reading, None, tolerance, axis_tolerance, unit, lines)
+    if chain.needs_tool_length and machine.number_option(265) != 1:
+        missing = sorted({m.tool for m in reading.moves if m.tool not in lengths})
+        if missing:
+            problem = (
+                f"the slides are computed for the head's tool, but the CL gives no LENGTH for "
+                f"T{missing[0]}"
+            )
+            return FiveAxisVerification(
+                machine, reading, None, tolerance, axis_tolerance, unit, lines, problem
+            )
+    fmt = machine.registers.formats[11]
+    decimals = min(4, fmt.right) if fmt is not None else 4
+    kinematics = FiveAxisKinematics(machine, chain, lengths)
+    comparison = compare_poses(
+        poses, reading.moves, kinematics, tolerance, axis_tolerance, decimals
+    )
+    return FiveAxisVerification(
+        machine, reading, comparison, tolerance, axis_tolerance, unit, lines
+    )
+
+
 def verify(
     tape_path: str,
     cl_file: str,
@@ -122,8 +179,12 @@ def verify(
     machine_key: str | MachineDefinition | None = None,
     tolerance_mm: float = DEFAULT_TOLERANCE_MM,
     dialect: str | None = None,
-) -> Verification:
+) -> Verification | FiveAxisVerification:
     machine = cl_machine(cl_file, plugins, machine_key, dialect)
+    if machine.kinematics is not None:
+        return verify_five_axis(
+            tape_path, cl_as_posted(cl_file, plugins, machine, dialect), machine, tolerance_mm
+        )
     path = cl_path(cl_as_posted(cl_file, plugins, machine, dialect), machine)
     reading = interpret(tape_path, diameter=machine.number_option(260) == 1)
     unit = "in" if reading.units == "INCHES" else "mm"

@@ -63,6 +63,9 @@ class TapeMove:
     tool: int = 0
     spindle: int = 0
     side: str = ""
+    # a five-axis tape: the rotary axes A, B, C at the end, and whether F is inverse time
+    rotary: Point = (0.0, 0.0, 0.0)
+    inverse_time: bool = False
 
 
 @dataclass
@@ -78,8 +81,15 @@ def rs274_path() -> str | None:
     return shutil.which("rs274")
 
 
-def numbered_copy(tape: str, *, diameter: bool) -> str:
-    """The tape with N = its line number on every block (comments and % stay as they are)."""
+def numbered_copy(tape: str, *, diameter: bool, replace: dict[str, str] | None = None) -> str:
+    """The tape with N = its line number on every block (comments and % stay as they are);
+    ``replace``: words rs274 does not know, each with the word it reads the same way (a
+    five-axis control's G43.4, whose tool-tip positions rs274 reads as written)."""
+    if replace:
+        pattern = re.compile(
+            r"(?<![A-Z0-9.])(" + "|".join(re.escape(w) for w in replace) + r")(?![0-9.])"
+        )
+        tape = pattern.sub(lambda m: replace[m.group(1)], tape)
     lines = []
     inserted = not diameter
     for number, line in enumerate(tape.splitlines(), start=1):
@@ -157,7 +167,13 @@ def tool_table(tools: tuple[int, ...]) -> str:
     return "".join(f"T{tool} P{tool} D0 Z0 ;gecent verify\n" for tool in tools)
 
 
-def interpret(tape_path: str, *, diameter: bool = False, timeout: float = 600.0) -> Interpretation:
+def interpret(
+    tape_path: str,
+    *,
+    diameter: bool = False,
+    timeout: float = 600.0,
+    replace: dict[str, str] | None = None,
+) -> Interpretation:
     program = rs274_path()
     if program is None:
         raise InterpreterMissing()
@@ -168,7 +184,7 @@ def interpret(tape_path: str, *, diameter: bool = False, timeout: float = 600.0)
     tools = tool_numbers(tape)
     with tempfile.TemporaryDirectory(prefix="gecent-verify-") as folder:
         copy = Path(folder) / "tape.ngc"
-        copy.write_text(numbered_copy(tape, diameter=diameter), encoding="ascii")
+        copy.write_text(numbered_copy(tape, diameter=diameter, replace=replace), encoding="ascii")
         table = Path(folder) / "tools.tbl"
         table.write_text(tool_table(tools), encoding="ascii")
         done = subprocess.run(
@@ -196,6 +212,7 @@ def parse_canon(output: str, returncode: int = 0) -> Interpretation:
     moves: list[TapeMove] = []
     feed, per_revolution, plane, units = 0.0, False, "XY", "MM"
     tool, spindle, side = 0, 0, ""
+    inverse_time = False
     tail: list[str] = []
     for text in output.splitlines():
         match = _CANON.match(text)
@@ -206,11 +223,25 @@ def parse_canon(output: str, returncode: int = 0) -> Interpretation:
         label, name, args = match.groups()
         line = int(label) if label.isdigit() else 0
         if name in ("STRAIGHT_TRAVERSE", "STRAIGHT_FEED"):
-            x, y, z = _numbers(args)[:3]
+            values = _numbers(args)
+            x, y, z = values[:3]
+            a, b, c = (*values[3:6], 0.0, 0.0, 0.0)[:3]
             kind = "rapid" if name == "STRAIGHT_TRAVERSE" else "feed"
             moves.append(
                 TapeMove(
-                    kind, (x, y, z), line, feed, per_revolution, plane, None, 0, tool, spindle, side
+                    kind,
+                    (x, y, z),
+                    line,
+                    feed,
+                    per_revolution,
+                    plane,
+                    None,
+                    0,
+                    tool,
+                    spindle,
+                    side,
+                    (a, b, c),
+                    inverse_time,
                 )
             )
         elif name == "ARC_FEED":
@@ -245,6 +276,8 @@ def parse_canon(output: str, returncode: int = 0) -> Interpretation:
             feed = _numbers(args)[0]
         elif name == "SET_FEED_MODE":
             per_revolution = _numbers(args)[-1] == 1.0
+        elif name == "COMMENT" and "feed mode set to" in args:
+            inverse_time = "inverse time" in args
         elif name == "SELECT_PLANE":
             plane = args.strip().removeprefix("CANON_PLANE_")
         elif name == "USE_LENGTH_UNITS":

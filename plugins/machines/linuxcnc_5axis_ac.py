@@ -1,0 +1,10 @@
+"""linuxcnc-5axis-ac: a five-axis machine pack, pure data (linuxcnc-5axis-ac.toml,
+docs/five-axis.md)."""
+
+from gecent.core.families import MachinePack
+from gecent.core.hookspecs import Register, hookimpl
+
+
+@hookimpl
+def register_machines(register: Register) -> None:
+    register(MachinePack.from_package(__package__ or __name__, "linuxcnc-5axis-ac.toml"))
