@@ -131,10 +131,23 @@ def _print_records(
     show_default=True,
     help="Largest deviation allowed, in millimetres.",
 )
+@click.option(
+    "--axis-tolerance",
+    "axis_tolerance",
+    type=click.FloatRange(min=0.0, min_open=True),
+    default=0.001,
+    show_default=True,
+    help="A five-axis machine: the largest tool-axis deviation allowed, in degrees.",
+)
 @click.option("--dialect", metavar="NAME", help=DIALECT_HELP)
 @reporting_errors
 def verify_command(
-    tape_path: str, cl_file: str, machine_key: str | None, tolerance: float, dialect: str | None
+    tape_path: str,
+    cl_file: str,
+    machine_key: str | None,
+    tolerance: float,
+    axis_tolerance: float,
+    dialect: str | None,
 ) -> None:
     """Read TAPE with LinuxCNC's rs274 and compare its tool path with the CL path: exit 0 when
     every CL point is reached in order, 1 at the first mismatch (docs/verify.md)."""
@@ -142,7 +155,7 @@ def verify_command(
 
     plugins = installed_plugins()
     override = machine_override(plugins, machine_key)
-    result = verify(tape_path, cl_file, plugins, override, tolerance, dialect)
+    result = verify(tape_path, cl_file, plugins, override, tolerance, dialect, axis_tolerance)
     for line in result.report():
         click.echo(line)
     sys.exit(0 if result.passed else 1)

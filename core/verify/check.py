@@ -179,12 +179,12 @@ def verify(
     machine_key: str | MachineDefinition | None = None,
     tolerance_mm: float = DEFAULT_TOLERANCE_MM,
     dialect: str | None = None,
+    axis_tolerance: float = DEFAULT_AXIS_TOLERANCE,
 ) -> Verification | FiveAxisVerification:
     machine = cl_machine(cl_file, plugins, machine_key, dialect)
     if machine.kinematics is not None:
-        return verify_five_axis(
-            tape_path, cl_as_posted(cl_file, plugins, machine, dialect), machine, tolerance_mm
-        )
+        records = cl_as_posted(cl_file, plugins, machine, dialect)
+        return verify_five_axis(tape_path, records, machine, tolerance_mm, axis_tolerance)
     path = cl_path(cl_as_posted(cl_file, plugins, machine, dialect), machine)
     reading = interpret(tape_path, diameter=machine.number_option(260) == 1)
     unit = "in" if reading.units == "INCHES" else "mm"
