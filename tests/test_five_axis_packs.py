@@ -43,9 +43,9 @@ FINI
 #     is (30, -40); G93 F = 800 / (90 degrees at option 112's 100 mm = 157.08) = 5.093
 # N7  (-20, -30, 2) leaning 30 towards -X: C 90 takes it to (30, -20, 52 above A), A -30 to
 #     Y = -20 cos 30 + 52 sin 30 = 8.679, Z = 20 sin 30 + 52 cos 30 - 50 = 5.033; the move
-#     is timed by A's 30 degrees at 100 mm (52.36 > the tip's 20): F = 15.279
+#     is timed by the tip's 20 mm in the part (E2): G93 F = 800 / 20 = 40
 # N9  no turn: G94, F800, (0, -30, 2) to Y = 26, Z = -4.967
-# N11 A over to +30 (the nearest way: C stays), timed by 60 degrees at 100: F = 7.639
+# N11 A over to +30 (the nearest way: C stays), the tip's 20 mm again: F = 40
 AC_TAPE = """%
 (SMALL)
 (T1, LENGTH 100 MM)
@@ -56,11 +56,11 @@ N3 G00 G43 X-40. Y-30. Z20. A0. C0. H1
 N4 G01 Z2. F300.
 N5 G93
 N6 G01 X30. Y-40. C90. F5.093
-N7 Y8.679 Z5.033 A-30. F15.279
+N7 Y8.679 Z5.033 A-30. F40.
 N8 G94
 N9 G01 Y26. Z-4.967 F800.
 N10 G93
-N11 G01 Y-8.679 Z5.033 A30. F7.639
+N11 G01 Y-8.679 Z5.033 A30. F40.
 N12 G00 Y20. Z50. A0.
 N13 M02
 %
@@ -237,9 +237,9 @@ def test_the_five_axis_job_passes_verify_at_a_micrometre_and_a_thousandth_of_a_d
 @pytest.mark.parametrize(
     ("edit", "reason"),
     [
-        (("N7 Y8.679 Z5.033 A-30. F15.279", "N7 Y8.679 Z5.033 A-30.01 F15.279"), "off the CL"),
+        (("N7 Y8.679 Z5.033 A-30. F40.", "N7 Y8.679 Z5.033 A-30.01 F15.279"), "off the CL"),
         (("N9 G01 Y26. Z-4.967 F800.", "N9 G01 Y26. Z-4.967 F900."), "F is 900.0000"),
-        (("N11 G01 Y-8.679 Z5.033 A30. F7.639", "N11 G01 Y-8.679 Z5.033 A30. F9."), "G93's F"),
+        (("N11 G01 Y-8.679 Z5.033 A30. F40.", "N11 G01 Y-8.679 Z5.033 A30. F9."), "G93's F"),
         (("N6 G01 X30. Y-40. C90. F5.093\n", ""), "off the CL line"),
         (("N12 G00 Y20. Z50. A0.\n", ""), "the tape ends before this CL point"),
     ],

@@ -67,7 +67,7 @@ def test_a_mill_program_with_tool_data(tmp_path: Path) -> None:
         "N8 G00 Z50.",
         "N9 T17 M06",
         "N10 S3000 M03",  # the tool change stopped the spindle
-        "N11 G43 X0. Y0. Z5. H27",  # ADJUST,27
+        "N11 G00 G43 X0. Y0. Z5. H27",  # ADJUST,27; G00 stated again after the tool change
         "N12 G42 D33",  # CUTCOM/RIGHT,33
         "N13 G01 Z-2.",
         "N14 G40",

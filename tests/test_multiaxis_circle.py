@@ -9,11 +9,10 @@ from pathlib import Path
 
 import pytest
 from gecent.core.dispatch.post import post
-from gecent.core.errors import NotYetSupported
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.machine.loader import load_machine_text
-from gecent.core.motion.gcode import CircularCodes, RotaryCodes
-from gecent.core.motion.multiaxis_circle import circle_code, slerp
+from gecent.core.motion.gcode import CircularCodes, RotaryCodes, circle_code
+from gecent.core.motion.multiaxis_circle import slerp
 from gecent.core.output.block import Code
 from gecent.core.plugins import get_plugins
 from gecent.core.state import RunResult
@@ -61,14 +60,16 @@ def test_w24_selgro_overrides_the_circular_code() -> None:
     assert circle_code(circular, rotary, 8.67, True, 0.0).location == 3
 
 
-def test_w24_arc_stops_by_name_until_output_applies_selgro(tmp_path: Path) -> None:
+def test_w24_arc_takes_selgro_circular_code(tmp_path: Path) -> None:
     """W24 as an arc on class 1: radius 8.67 about the table's axis, the tool level
     (k = 0, A = 0) turning from azimuth 0 to 40 degrees while the tip sweeps 80: C = the
     azimuth, X = -8.67 sin C, Y = 8.67 cos C + 4, a machine circle of radius 8.67 with
-    C turning 40 degrees in proportion. Its block needs TABLEG(31); OUTPUT applies SELGCR's
-    code alone, so the arc is refused by name rather than punched under TABLEG(4)."""
+    C turning 40 degrees in proportion, counterclockwise. OUTPUT's SELGRO puts its block
+    under TABLEG(31) = G30 (GDIMUL 100), not SELGCR's TABLEG(4) = G03 (the manual's rule;
+    this test stopped with "not yet supported" before OUTPUT applied it). C's register is
+    given a 2.4 format: 40 degrees do not fit MACH40's -14."""
     overlay = CIRCLES.replace("28 = 1.0\n", "28 = 1.0\n111 = 360.0\n118 = 1.0\n")
-    machine = mach40(overlay + ALL_CODES)
+    machine = mach40(overlay.replace("8 = 14.0\n", "7 = -24.0\n8 = 14.0\n") + ALL_CODES)
     end = (8.67 * cos(radians(80)), 8.67 * sin(radians(80)))
     lines = [
         "FROM/8.67,0,1,1,0,0",
@@ -76,8 +77,13 @@ def test_w24_arc_stops_by_name_until_output_applies_selgro(tmp_path: Path) -> No
         "CIRCLE/0,0,1,0,0,1,8.67",
         f"GOTO/{end[0]:.8f},{end[1]:.8f},1,{cos(radians(40)):.8f},{sin(radians(40)):.8f},0",
     ]
-    with pytest.raises(NotYetSupported, match=r"SELGRO's larger circular code, TABLEG\(31\)"):
-        run(tmp_path, lines, machine)
+    result = run(tmp_path, lines, machine)
+    arcs = [b for b in result.blocks if b.code is Code.CIRCLE_XY_CCLW]
+    assert len(arcs) == 1
+    assert (arcs[0].cells[2], arcs[0].cells[7]) == (30.0, 40.0)
+    # X = -8.67 sin 40, Y = 8.67 (cos 40 - 1), J 8.67; F = 10 / 8.67 in the TABLEG(11) size
+    # class's inverse time row (format 33)
+    assert arcs[0].punch == "N005G30X-5573Y-20284C+40J867F001153"
 
 
 def test_a_circle_with_the_tool_along_z(tmp_path: Path) -> None:
@@ -172,7 +178,9 @@ def test_an_arc_the_class_bends_goes_as_straight_moves(tmp_path: Path) -> None:
         "CIRCLE/0,0,0,0,0,1,5",
         "GOTO/0,5,0,0,0.6,0.8",
     ]
-    result = run(tmp_path, lines, mach40(CIRCLES))
+    # (its chords turn C up to 1.48 units, past ROTMAX / 10: SELGRO needs a TABLEG(11),
+    # which MACH40 as transcribed lacks)
+    result = run(tmp_path, lines, mach40(CIRCLES + ALL_CODES))
     moves = [b for b in result.blocks if b.code is Code.LINEAR]
     assert len(moves) > 10
     assert all(b.radius is None for b in moves)

@@ -13,6 +13,8 @@ from gecent.core.cl.records import Motion, MotionSubtype
 from gecent.core.dispatch.post import post
 from gecent.core.errors import InputError, NotYetSupported
 from gecent.core.machine import standard_machine
+from gecent.core.machine.definition import MachineDefinition
+from gecent.core.machine.loader import load_machine_text
 from gecent.core.motion.multiaxis import MultiaxisMotion
 from gecent.core.multiaxis.transform import B, Kinematics, MachinePoints, Points, as_points
 from gecent.core.output.block import Block, Code
@@ -32,10 +34,21 @@ FINI
 """
 
 
+def mach40_g10() -> MachineDefinition:
+    """MACH40 with a TABLEG(11) (G10): as transcribed it has G11 and G01 only, so SELGRO has
+    no code for a rotary departure of ROTMAX / 10 (3.6 degrees) or more and stops with fatal
+    138 (W22, 001 L6261-6282; docs/decisions.md); the manual's examples assume every code
+    available (L6127-6128)."""
+    pack = get_plugins().machine("mach40")
+    assert pack is not None
+    text = '[machine]\nname = "mach40x"\ntitle = "MACH40 TEST"\n[tableg]\n11 = 10\n'
+    return load_machine_text(text, "mach40x.toml", pack.load())
+
+
 def test_mach40_posts_a_multiaxis_program(plugins: PluginSet, tmp_path: Path) -> None:
     """MACH40 is class 1 (table C about Z, head A about X), R + TL = option 104 = 4 in,
     rotary output in hundredths of a revolution (option 118 = -1), ROTMAX 35.99964 degrees
-    (option 111). Worked by hand from class 1's equations:
+    (option 111) = 9.9999 units. Worked by hand from class 1's equations:
 
     * FROM along Z (k = 1, singular): C stays 0, A = 90, Z = 10 + 4 = 14;
     * (1, 0, 10) along Z: X = x sin C - y cos C = 0, Y = x cos C + y sin C = 1: Y+1;
@@ -43,17 +56,33 @@ def test_mach40_posts_a_multiaxis_program(plugins: PluginSet, tmp_path: Path) ->
       C turns 25 units (90 degrees) and A -10.2417 (-36.87): three segments of ROTMAX;
     * (2, 1, 10) with (.6, 0, .8): C back to 0 (the shorter way), X = -1, Y = 2 + 2.4:
       X -2, Y +2 in three segments;
-    * a 3-value point keeps the tool axis: Z-1."""
+    * a 3-value point keeps the tool axis: Z-1.
+
+    SELGRO (W22, 001 L6261-6282): a segment of ROTMAX turns C 8.3333 units, above ROTMAX /
+    10 (.99999), which needs the 36-359.9999 degree code, TABLEG(11). MACH40 as transcribed
+    has none, so SEGMNT cuts its turns to the largest range it has a code for, ROTMAX / 10
+    (TABLEG(2), G01; docs/decisions.md): 25 units in 26 blocks, each within .99999. With a
+    G10 they go out in three segments under it (changed from G11 by the manual's rule), and
+    the inverse time command takes the G10 row (format 33, at most 9.999, 001 L24453):
+    F001194, and N007's 21.2 held to F009999 (4.71 IPM)."""
     program = tmp_path / "m.apt"
     program.write_text(PROGRAM)
-    result = post(str(program), plugins)
+    as_transcribed = post(str(program), plugins)
+    lines = [tape_line(b) for b in as_transcribed.blocks if b.code is not Code.PARTNO]
+    lines = [line for line in lines if line]
+    assert [line[:4] for line in lines].count("N006") == 26
+    assert [line[:4] for line in lines].count("N007") == 26
+    assert lines[1] == "N006X+00385Y+00538Z-00308A-03939C+09615F01035"
+    turns = [int(line.split("C")[1][:6]) for line in lines if line.startswith("N006")]
+    assert sum(turns) == 250000 and max(abs(t) for t in turns) <= 9999
+    result = post(str(program), plugins, machine_override=mach40_g10())
     lines = [tape_line(b) for b in result.blocks if b.code is not Code.PARTNO]
     assert [line for line in lines if line] == [
         "N005G01Y+1F01000",
-        "N006G11X+03333Y+04667Z-02667A-34139C+83333F0012",
+        "N006G10X+03333Y+04667Z-02667A-34139C+83333F001194",
         "N006X+03334Y+04666Z-02666A-34138C+83334",
         "N006X+03333Y+04667Z-02667A-34139C+83333",
-        "N007X-06667Y+06667C-83333F0212",
+        "N007X-06667Y+06667C-83333F009999",
         "N007X-06666Y+06666C-83334",
         "N007X-06667Y+06667C-83333",
         "N008G01Z-1F01000",
@@ -130,7 +159,7 @@ def test_a_tool_axis_not_of_length_one_is_warned(plugins: PluginSet, tmp_path: P
     """FROM5 (001 L6290-6300): the direction cosines' length is tested."""
     program = tmp_path / "m.apt"
     program.write_text(PROGRAM.replace("GOTO/1,0,10,0,0.6,0.8", "GOTO/1,0,10,0,0.6,0.9"))
-    result = post(str(program), plugins)
+    result = post(str(program), plugins, machine_override=mach40_g10())
     assert any("NOT A UNIT VECTOR" in d.text for d in result.diagnostics)
 
 
@@ -146,7 +175,7 @@ def test_what_multiaxis_motion_does_not_do_yet_is_named(
     program = tmp_path / "m.apt"
     program.write_text(PROGRAM.replace("GOTO/2,1,9", f"{line}\nGOTO/2,1,9"))
     with pytest.raises(NotYetSupported, match=feature):
-        post(str(program), plugins)
+        post(str(program), plugins, machine_override=mach40_g10())
 
 
 def test_linrty_leaves_every_piece_within_the_sphere() -> None:
@@ -180,7 +209,7 @@ def _lintol_program(tmp_path: Path, lintol: str) -> list[str]:
         "PARTNO L\nMACHIN/GECENT,40\nFROM/0,0,10,0,0.6,0.8\nFEDRAT/10\n"
         f"{lintol}\nGOTO/2,0,10,0.6,0,0.8\nFINI\n"
     )
-    result = post(str(program), get_plugins())
+    result = post(str(program), get_plugins(), machine_override=mach40_g10())
     lines = [line for b in result.blocks if b.code is Code.LINEAR and (line := tape_line(b))]
     return [line[4:] if line.startswith("N") else line for line in lines]  # (N aside)
 
@@ -234,14 +263,14 @@ def test_linrty_says_when_the_tolerance_cannot_be_met(tmp_path: Path) -> None:
         "PARTNO P\nMACHIN/GECENT,40\nFROM/5,0,10,0.6,0,0.8\nFEDRAT/10\nLINTOL/0.001\n"
         "GOTO/5,0,10,-0.6,0,0.8\nFINI\n"
     )
-    result = post(str(program), get_plugins())
+    result = post(str(program), get_plugins(), machine_override=mach40_g10())
     assert any("LINEARITY TOLERANCE CANNOT BE MET" in d.text for d in result.diagnostics)
     program.write_text(
         program.read_text().replace("GOTO/5,0,10,-0.6,0,0.8", "GOTO/5,0,10,0,0.6,0.8")
     )
     program.write_text(program.read_text().replace("LINTOL/0.001", "LINTOL/0.000000000001"))
     with pytest.raises(InputError, match="segment"):
-        post(str(program), get_plugins(), max_segments=50)
+        post(str(program), get_plugins(), machine_override=mach40_g10(), max_segments=50)
 
 
 def test_lintol_r_alone_drops_the_cone() -> None:

@@ -32,8 +32,9 @@ def mach40(overlay: str = "") -> MachineDefinition:
 
 
 # MACH40 has no 36-359.9999 degree code (TABLEG(11)): a ROTATE block of more than 3.6
-# degrees has no G code there (fatal 138, as the three-axis ROTATE); the manual's W25/W27
-# assume every code available
+# degrees has no G code there (fatal 138, as the three-axis ROTATE), nor has a CODE 0
+# multiaxis move (ROTREF's) once SELGRO applies to it (W22, 001 L6261-6282); the manual's
+# W25/W27 assume every code available
 WITH_G10 = "[tableg]\n11 = 10\n"
 
 
@@ -61,7 +62,8 @@ def test_w26_rotref_keeps_the_tip_and_turns_the_tool(tmp_path: Path) -> None:
     reset to (1, 2, 3); GOLINE's direct transform: X = sin 130 - 2 cos 130 = 2.051619,
     Y = cos 130 + 2 sin 130 + 2.4 = 3.289301, Z = 6.2. The CODE 0 move: dX 1.0516,
     dY -1.1107, dC 40 degrees = 11.1111 hundredths, in two ROTMAX segments."""
-    result = run(tmp_path, [FROM, "FEDRAT/10", "ROTATE/TABLE,INCR,40,CLW,ROTREF"], mach40())
+    lines = [FROM, "FEDRAT/10", "ROTATE/TABLE,INCR,40,CLW,ROTREF"]
+    result = run(tmp_path, lines, mach40(WITH_G10))  # (dC 5.5556 needs TABLEG(11))
     blocks = moves(result)
     assert [b.code for b in blocks] == [Code.LINEAR, Code.LINEAR]
     assert [cells(b) for b in blocks] == [
@@ -74,7 +76,7 @@ def test_w26_rotref_keeps_the_tip_and_turns_the_tool(tmp_path: Path) -> None:
 def test_w26_option_198_reverses_rotref(tmp_path: Path) -> None:
     """Option 198 = 1 (L26559-26563): no ROTREF compensates the frame, ROTREF turns it
     with the part (the decision table of spec 03 §14.1)."""
-    machine = mach40("[optab]\n198 = 1.0\n")
+    machine = mach40("[optab]\n198 = 1.0\n" + WITH_G10)
     without = moves(run(tmp_path, [FROM, "FEDRAT/10", "ROTATE/TABLE,INCR,40,CLW"], machine))
     assert [cells(b) for b in without] == [
         (0.5258, -0.5554, 0.0, 5.5556),
@@ -142,7 +144,7 @@ def test_option_29_zero_indexes_without_remembering(tmp_path: Path) -> None:
 def test_option_29_zero_with_atangl_warns_and_tracks(tmp_path: Path) -> None:
     """ATANGL or ROTREF with option 29 = 0: the warning comment, then as option 29 = 1
     (L6746-6751): ROTREF compensates as W26."""
-    machine = mach40("[optab]\n29 = 0.0\n")
+    machine = mach40("[optab]\n29 = 0.0\n" + WITH_G10)
     lines = [FROM, "FEDRAT/10", "ROTATE/TABLE,INCR,40,CLW,ROTREF"]
     result = run(tmp_path, lines, machine)
     assert [d.text for d in result.diagnostics][-1] == "ROTREF AND ATANGL CANNOT BE USED"
@@ -154,8 +156,8 @@ def test_rotref_is_linearity_tested_even_under_lintol_off(tmp_path: Path) -> Non
     tip would swing off (1, 2, 3) while C turns, so the move is cut; every piece keeps the
     tip within r of the straight move (here a point)."""
     base = [FROM, "FEDRAT/10", "ROTATE/TABLE,INCR,40,CLW,ROTREF"]
-    plain = moves(run(tmp_path, base, mach40()))
-    tested = run(tmp_path, [*base[:2], "LINTOL/0.01", "LINTOL/OFF", base[2]], mach40())
+    plain = moves(run(tmp_path, base, mach40(WITH_G10)))
+    tested = run(tmp_path, [*base[:2], "LINTOL/0.01", "LINTOL/OFF", base[2]], mach40(WITH_G10))
     pieces = moves(tested)
     assert len(pieces) > len(plain)
     assert sum(round(float(b.cells[7]) / 0.0001) for b in pieces) == 111111  # type: ignore[arg-type]
@@ -166,7 +168,7 @@ def test_a_long_rotref_turn_keeps_its_direction(tmp_path: Path) -> None:
     """320 degrees CLW with ROTREF: made as two turns of 160 so that the class's angle is
     never taken the shorter way (-40): C advances 88.8889 units in all."""
     lines = [FROM, "FEDRAT/10", "ROTATE/TABLE,INCR,320,CLW,ROTREF"]
-    blocks = moves(run(tmp_path, lines, mach40()))
+    blocks = moves(run(tmp_path, lines, mach40(WITH_G10)))
     turns = [round(float(b.cells[7]) / 0.0001) for b in blocks]  # type: ignore[arg-type]
     assert all(t > 0 for t in turns) and sum(turns) == 888889
     # back where the tip was, the tool turned 320 degrees about Z: C = 90 + 320 = 50

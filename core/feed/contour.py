@@ -168,6 +168,12 @@ class RapidCommand:
             ipm = min(abs(rapid_ipm), self.vector)
         if rapid_ipm > 0:  # held down by the tape reader (001 L11890-11910)
             ipm = min(ipm, rapid_ipm)
+        if length == 0.0:
+            # a rapid that only turns the rotary axes (a multiaxis machine): no slide to time
+            return None, ipm
+        if length == 0.0:
+            # a rapid that only turns the rotary axes (a multiaxis machine): no slide to time
+            return None, ipm
         command = gdimul * ipm / length
         if command > self.maximum:
             command = self.maximum

@@ -17,6 +17,8 @@ from gecent.core.machine.definition import MachineDefinition
 LINEAR_RANGES = ((13, 0.1), (12, 1.0), (2, 10.0), (11, 100.0), (14, 1000.0), (15, 10000.0))
 INCH_LIMITS = (0.1, 1.0, 10.0, 100.0, 1000.0)  # RNGDEP, option 138 = 0 (001 L5885-5897)
 METRIC_LIMITS = (1.0, 10.0, 100.0, 1000.0)  # option 138 = 1; the fifth is option 4
+# a range's rank in magnitude order, by its linear TABLEG location (13 < 12 < 2 < 11 < 14 < 15)
+RANK = {location: rank for rank, (location, _) in enumerate(LINEAR_RANGES)}
 
 
 @dataclass(frozen=True, slots=True)
@@ -80,18 +82,46 @@ class RotaryCodes:
             )
         self.codes = tuple(codes)
 
+    def block_limit(self, maximum_units: float) -> float:
+        """The largest rotary departure one block can hold on this machine (output units):
+        ROTMAX (option 111), or where the machine lacks TABLEG(11) the top of the largest
+        range it has a code for (ROTMAX / 10 with TABLEG(2) ...): SEGMNT cuts turns to
+        it, so a machine without the top code turns in more blocks rather than stopping
+        with fatal 138 (docs/decisions.md)."""
+        tops = (*self.limits, maximum_units)
+        present = [top for top, code in zip(tops, self.codes, strict=True) if code is not None]
+        return max(present) if present else maximum_units
+
     def select(self, largest_units: float) -> DimensionCode:
         code = _covering(self.codes, self.limits, largest_units)
         if code is None:
             raise FatalError(138, f"no TABLEG code covers a rotary departure of {largest_units:g}")
         return code
 
+    def needed(self, largest_units: float) -> int:
+        """The rank (in LINEAR_RANGES' order) of the smallest rotary range that covers
+        ``largest_units``: 0 for TABLEG(13)'s up to 3 for TABLEG(11)'s."""
+        return next(
+            (i for i, limit in enumerate(self.limits) if largest_units < limit), len(self.limits)
+        )
+
+    def covers(self, code: DimensionCode, largest_units: float) -> bool:
+        """Whether a linear or circular code's range, read as a rotary range, takes the
+        rotary departure ``largest_units`` (a code above TABLEG(11)'s size takes any)."""
+        return largest_units == 0.0 or RANK[code.size_class] >= self.needed(largest_units)
+
+    def with_linear(self, code: DimensionCode, largest_units: float) -> DimensionCode:
+        """SELG, then SELGRO for a multiaxis move (001 L6052-6069, L6261-6282, W22): the
+        linear code stays when its rotary range covers the largest rotary departure;
+        otherwise SELGRO's own code, which is then the larger and covers the linear
+        departures too. Fatal 138 when the machine has no code for the rotary departure."""
+        return code if self.covers(code, largest_units) else self.select(largest_units)
+
 
 def larger(first: DimensionCode, second: DimensionCode) -> DimensionCode:
     """The combination rule: a block with linear (or circular) and rotary departures takes
     the larger of the two ranges, which covers both (001 L6261-6282)."""
-    rank = {location: i for i, (location, _) in enumerate(LINEAR_RANGES)}
-    return first if rank[first.size_class] >= rank[second.size_class] else second
+    return first if RANK[first.size_class] >= RANK[second.size_class] else second
 
 
 # (CLW location, CCLW location, GDIMUL) per radius band (SELGCR, 001 L6076-6170)
@@ -136,6 +166,24 @@ class CircularCodes:
         if code is None:
             raise FatalError(144, f"no TABLEG code for a radius of {radius:g}")
         return code
+
+
+def circle_code(
+    circular: CircularCodes, rotary: RotaryCodes, radius: float, clockwise: bool, turn: float
+) -> DimensionCode:
+    """SELGCR, then SELGRO for a multiaxis circle (001 L6150-6170, L6261-6282, W24): the
+    circular code for the radius unless the largest rotary departure ``turn`` (output units)
+    needs a larger range; then the circular code of the smallest rotary range that covers
+    it, skipping absent codes upward within the rotary ranges (open question 11: a
+    circular block keeps a circular code). Fatal 144 when the machine has none."""
+    code = circular.select(radius, clockwise)
+    if rotary.covers(code, turn):
+        return code
+    bands = circular.codes[clockwise][rotary.needed(turn) : len(rotary.limits) + 1]
+    found = next((c for c in bands if c is not None), None)
+    if found is None:
+        raise FatalError(144, f"no circular TABLEG code covers a rotary departure of {turn:g}")
+    return found
 
 
 def _covering(

@@ -22,12 +22,13 @@ A point with three values keeps the tool axis in force (the last one given; +Z a
 from __future__ import annotations
 
 from collections.abc import Callable
-from math import acos, ceil, degrees, radians, sqrt
+from math import acos, ceil, degrees, isfinite, radians, sqrt
 
 import numpy as np
 from gecent.core.cl.records import Motion, MotionSubtype
 from gecent.core.errors import Diagnostic, InputError, NotYetSupported, SourcePosition
 from gecent.core.machine.definition import ROTARY_CELLS
+from gecent.core.motion.gcode import RotaryCodes
 from gecent.core.motion.guard import check_segments
 from gecent.core.motion.linear import godlta_delta
 from gecent.core.motion.linearity import LinearityLimit, LinearityTest
@@ -72,7 +73,11 @@ class MultiaxisMotion:
         self.per_degree = UNITS_PER_DEGREE.get(machine.number_option(118), 1.0)
         self.rotary_step = machine.number_option(119) or 0.0001
         # ROTMAX in rotary steps: option 111 is in degrees
-        self.rotmax = max(1, int(machine.number_option(111) * self.per_degree / self.rotary_step))
+        maximum = machine.number_option(111) * self.per_degree
+        if not isinstance(transform, KinematicChain):
+            # SELGRO's codes bound a block's turn (a five-axis pack's G01 takes any)
+            maximum = RotaryCodes(machine, maximum).block_limit(maximum)
+        self.rotmax = max(1, int(maximum / self.rotary_step))
         self.columns = transform.rotary  # the machine columns A, B, C it drives
         self.cells = ROTARY_CELLS[: len(self.columns)]
         for cell in self.cells:
@@ -95,7 +100,9 @@ class MultiaxisMotion:
         self.modern_absolute = machine.number_option(251) == 1
         self.where: SourcePosition | None = None
         self.tool_axis: tuple[float, float, float] = (0.0, 0.0, 1.0)
-        self.machine_previous = np.zeros((1, 6))  # the last machine point (radians)
+        # the last machine point (radians); none before the first (a five-axis machine's
+        # preferred way)
+        self.machine_previous: np.ndarray | None = None
         # each rotary axis's angle so far, unwrapped (degrees), and in rotary steps
         self.angles = [0.0] * len(self.columns)
         self.rotary_previous = [0] * len(self.columns)
@@ -125,6 +132,10 @@ class MultiaxisMotion:
             length = sqrt(i * i + j * j + k * k)
             if length == 0.0:
                 raise InputError("the tool axis i, j, k is 0, 0, 0", record.where)
+            if not isfinite(length):
+                raise InputError(
+                    f"the tool axis {i:g}, {j:g}, {k:g} is too large to normalise", record.where
+                )
             if abs(length - 1.0) > UNIT_TOLERANCE:
                 self.warn(Diagnostic(NOT_UNIT, record.where))
             self.tool_axis = (i / length, j / length, k / length)
@@ -212,7 +223,7 @@ class MultiaxisMotion:
             and not self.state.feed.rapid_ipm
             and (rule.one_point_records or len(record.points) > 1 or tested)
             and not self.singular
-            and not self._singular(part)
+            and (self.chain is not None or not self._singular(part))
         ):
             # LINRTY: not for rapid moves, nor one-point records under LINTOL/OFF, nor a
             # move into or out of a singular point ("linearity testing is disregarded over
@@ -313,6 +324,7 @@ class MultiaxisMotion:
         # the machine stands at the turned angle now: no longer at an open one
         degrees_now = target * self.rotary_step / self.per_degree
         self.angles[index] = degrees_now
+        assert self.machine_previous is not None
         for row in (self.machine_previous[0], self.machine_raw):
             row[column] = radians(degrees_now)
             row[0:3] = slides
@@ -329,7 +341,7 @@ class MultiaxisMotion:
         position = self.state.position
         departures = [linear[a] - position.previous[a] for a in range(3)]
         turns = [r - p for r, p in zip(rotary, self.rotary_previous, strict=True)]
-        if not any(departures) and not any(turns):
+        if not any(departures) and not any(turns) and not self._unstated():
             return  # no move (001 L4283-4290)
         count = segment_count(departures + turns, [self.depmax] * 3 + [self.rotmax] * len(turns))
         if count > 1:
@@ -339,6 +351,8 @@ class MultiaxisMotion:
         reached = list(position.previous[:3])
         pieces = segments(departures + turns, count) if count > 1 else (tuple(departures + turns),)
         angles = list(self.rotary_previous)
+        if path < self.step:
+            path = 0.0  # (a tip that moves less than a step: a turn of the tool alone)
         # G93 on a modern control: a move the slides make while the tool turns (the control
         # would take F over the slides' and angles' travel), or a turn alone
         timed = (
@@ -359,11 +373,10 @@ class MultiaxisMotion:
                 angles = [a + t for a, t in zip(angles, piece[3:], strict=True)]
                 block.angles = tuple(angles)
             block.inverse_time = timed
+            # the tip's path in the part (E2), or for a turn alone the rotary arc
             block.feed_length = (
                 path / count
-                if path > 0.0 and self.chain is None
-                else max(path / count, self._turn_length(list(piece[3:]), list(linear_piece)))
-                if self.chain is not None
+                if path > 0.0
                 else self._turn_length(list(piece[3:]), list(linear_piece))
             )
             block.segment = segment_place(index, count)
@@ -374,6 +387,11 @@ class MultiaxisMotion:
         position.previous[:] = position.present
         self.rotary_previous = rotary
 
+    def _unstated(self) -> bool:
+        """The first move after a tool change on a modern control (G43 H or the tool centre
+        point still to go out): it states every axis even where the tool already is."""
+        return self.state.tool.length_pending and self.modern_absolute
+
     def _turn_length(self, turns: list[int], slides: list[int]) -> float:
         """The path of a move that turns the tool without moving its tip in the part: the
         longer of the slides' travel and each rotary axis's arc at its radius (option 128,
@@ -382,12 +400,13 @@ class MultiaxisMotion:
         machine = self.state.machine
         longest = sqrt(sum((s * self.step) ** 2 for s in slides))
         if self.chain is not None:
-            swept = self.chain.swing(
+            # the axes' arcs at their radii: the slides' travel is the machine's, not the
+            # cut's (under the control's tool centre point the slides stand)
+            return self.chain.swing(
                 [t * self.rotary_step / self.per_degree for t in turns],
                 machine.number_option(112),
                 machine.number_option(128),
             )
-            return max(longest, swept)
         for cell, steps in zip(self.cells, turns, strict=True):
             radius = machine.number_option(128 if cell == 6 else 112)
             degrees = abs(steps) * self.rotary_step / self.per_degree

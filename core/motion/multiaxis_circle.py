@@ -22,9 +22,10 @@ passes them, and this module outputs the finished arc through the transform clas
   option 4) the arc goes out as straight multiaxis moves (GOLINE, tested by LINTOL when on)
   through the quadrant points, each quadrant in equal chords within the same tolerance
   (option 262 when given).
-* The G code is SELGCR's for the machine radius, then SELGRO's: a rotary departure beyond
-  the circular code's rotary range takes the circular band of the rotary code's size
-  (W24: TABLEG(21) CLW, (31) CCLW; :func:`circle_code`).
+* The G code is OUTPUT's (core/output/element.py): SELGCR's for the machine radius, then
+  SELGRO's, a rotary departure beyond the circular code's rotary range taking the circular
+  band that covers it (W24: TABLEG(21) CLW, (31) CCLW; core/motion/gcode.py's
+  :func:`circle_code`).
 * D and E (DBFSEG 16, 17), the rotary "supplementary constants", are not computed: the
   manual gives no formula (open question 14). An arc that turns a rotary axis is output
   with the rotary departures alone, and a warning says D and E are missing.
@@ -43,13 +44,6 @@ from gecent.core.motion.circle import (
     arc_sweep,
     goes_linear,
     quadrant_crossings,
-)
-from gecent.core.motion.gcode import (
-    LINEAR_RANGES,
-    CircularCodes,
-    DimensionCode,
-    RotaryCodes,
-    larger,
 )
 from gecent.core.motion.multiaxis import NOT_UNIT, UNIT_TOLERANCE, MultiaxisMotion, PartPoint
 from gecent.core.motion.rounding import to_steps
@@ -86,26 +80,6 @@ def slerp(start: Axis, end: Axis, fraction: float) -> Axis:
     return (i / length, j / length, k / length)
 
 
-def circle_code(
-    circular: CircularCodes, rotary: RotaryCodes, radius: float, clockwise: bool, turn: float
-) -> DimensionCode:
-    """SELGCR, then SELGRO (001 L6150-6170, L6261-6282): the circular code for the radius
-    unless the largest rotary departure ``turn`` (output units) needs a larger range; then
-    the circular code of that range's size, skipping absent codes upward (open question
-    11: a circular block keeps a circular code)."""
-    code = circular.select(radius, clockwise)
-    if turn == 0.0:
-        return code
-    needed = rotary.select(turn)
-    if larger(code, needed) is code:
-        return code
-    rank = [location for location, _ in LINEAR_RANGES].index(needed.size_class)
-    found = next((c for c in circular.codes[clockwise][rank:] if c is not None), None)
-    if found is None:
-        raise FatalError(144, f"no circular TABLEG code covers a rotary departure of {turn:g}")
-    return found
-
-
 class MultiaxisCircle:
     """PROCQD on a multiaxis machine: CircularMotion's finisher."""
 
@@ -115,8 +89,6 @@ class MultiaxisCircle:
         machine = motion.state.machine
         self.step = motion.step
         self.depmax = machine.number_option(4)
-        self.circular_codes = CircularCodes(machine)
-        self.rotary_codes = RotaryCodes(machine, machine.number_option(111) * motion.per_degree)
 
     def finish(self, arc: Arc) -> None:
         try:
@@ -335,8 +307,6 @@ class MultiaxisCircle:
                 before = position.previous_part
                 block.feed_length = sqrt(sum((part[a] - before[a]) ** 2 for a in range(3)))
             else:
-                largest = max((abs(t) for t in turns), default=0) * motion.rotary_step
-                self._check_code(radius, clockwise, largest)
                 for axis in (u, v):
                     block.cells[8 + axis] = abs(centre_steps[axis] - position.previous[axis]) * step
                 block.radius = radius
@@ -377,18 +347,6 @@ class MultiaxisCircle:
             out.extend(before + (fraction - before) * n / count for n in range(1, count + 1))
             before = fraction
         return out
-
-    def _check_code(self, radius: float, clockwise: bool, turn: float) -> None:
-        """SELGRO's override of a circular code (W24) is OUTPUT's, which applies SELGCR
-        alone: an arc that needs it stops by name rather than go out under a code whose
-        range drops the rotary word's leading digits."""
-        chosen = circle_code(self.circular_codes, self.rotary_codes, radius, clockwise, turn)
-        if chosen.location != self.circular_codes.select(radius, clockwise).location:
-            raise NotYetSupported(
-                f"a multiaxis circle whose rotary departure ({turn:g}) needs SELGRO's larger "
-                f"circular code, TABLEG({chosen.location}) (W24): OUTPUT applies SELGCR's alone",
-                self._arc.record.where,
-            )
 
     # -- straight moves -------------------------------------------------------------------
 

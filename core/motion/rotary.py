@@ -20,6 +20,7 @@ from dataclasses import dataclass
 from gecent.core.cl.records import Statement, Word
 from gecent.core.errors import Diagnostic, InputError, NotYetSupported
 from gecent.core.machine.definition import ROTARY_CELLS
+from gecent.core.motion.gcode import RotaryCodes
 from gecent.core.motion.rounding import to_steps
 from gecent.core.motion.segments import segment_place
 from gecent.core.output.block import Block, Code
@@ -117,7 +118,8 @@ class RotaryElement:
             raise NotYetSupported(f"rotary scaling option 118 = {scaling:g}")
         self.per_degree = UNITS_PER_DEGREE[scaling]
         self.step = machine.number_option(119)
-        self.maximum = machine.number_option(111) * self.per_degree
+        maximum = machine.number_option(111) * self.per_degree
+        self.maximum = RotaryCodes(machine, maximum).block_limit(maximum)
         self.clw_increases = machine.number_option(117) >= 0
         self.positive_is_clw = machine.number_option(120) != -1
         self.tracked = machine.number_option(29) != 0

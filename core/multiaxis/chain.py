@@ -116,8 +116,8 @@ def _angle_between(p: Vector, q: Vector, axis: Vector) -> float | None:
     when p lies along the axis (any angle does)."""
     p_flat = _minus(p, _scaled(axis, _dot(axis, p)))
     q_flat = _minus(q, _scaled(axis, _dot(axis, q)))
-    if _dot(p_flat, p_flat) < SINGULAR or _dot(q_flat, q_flat) < SINGULAR:
-        return None
+    if _dot(p_flat, p_flat) < SINGULAR**2 or _dot(q_flat, q_flat) < SINGULAR**2:
+        return None  # (along the axis to 1e-9 radians: nearer, the angle is still defined)
     return atan2(_dot(axis, cross(p_flat, q_flat)), _dot(p_flat, q_flat))
 
 
@@ -271,7 +271,12 @@ class KinematicChain:
                 if before is None:
                     cost = 0.0 if chosen[0] * self.prefer >= -1e-12 else 1.0
                 key = (cost, (chosen[0], chosen[1]), singular)
-                if best is None or key[0] < best[0] - 1e-9:
+                preferred = chosen[0] * self.prefer > 1e-12
+                if (
+                    best is None
+                    or key[0] < best[0] - 1e-9
+                    or (abs(key[0] - best[0]) <= 1e-9 and preferred)
+                ):
                     best = key
         if best is None:
             return None

@@ -18,7 +18,14 @@ from gecent.core.feed.contour import FeedCommand, RapidCommand
 from gecent.core.feed.limits import FeedLimits
 from gecent.core.feed.optimise import FeedOptimiser
 from gecent.core.feed.positioning import XY, FeedContext, FeedType, Z
-from gecent.core.motion.gcode import CircularCodes, DimensionCode, LinearCodes, RotaryCodes
+from gecent.core.machine.definition import ROTARY_CELLS
+from gecent.core.motion.gcode import (
+    CircularCodes,
+    DimensionCode,
+    LinearCodes,
+    RotaryCodes,
+    circle_code,
+)
 from gecent.core.motion.limits import SlideLimits
 from gecent.core.motion.linear import TWO_AXIS
 from gecent.core.motion.rotary import UNITS_PER_DEGREE
@@ -122,6 +129,10 @@ class OutputElement(ModernProgram):
         # control's tool-centre-point words in place of G43 (option 265 = 1)
         self.rotary_step = machine.number_option(119) or 0.0001
         self.inverse_time_code = machine.g_code(INVERSE_TIME) is not None
+        f_format = machine.registers.formats[11]
+        self.inverse_time_limit = (
+            10.0**f_format.left - 10.0**-f_format.right if f_format is not None else 1e9
+        )
         chain = machine.kinematics
         tcp = chain is not None and machine.number_option(265) == 1
         self.tcp_on = chain.tcp_on if tcp and chain is not None else ""
@@ -210,8 +221,12 @@ class OutputElement(ModernProgram):
                 state.pending.rpm = state.spindle.speed
         block.cells[12] = state.pending.spindle
         block.cells[14] = state.pending.m_code
-        if self.tcp_active and self.tcp_off and block.cells[14] == self.end_code:
-            self._tcp_off(block.record)  # the control's tool centre point ends first
+        if (
+            self.tcp_active
+            and self.tcp_off
+            and (block.cells[14] == self.end_code or block.cells[13] is not ABSENT)
+        ):
+            self._tcp_off(block.record)  # the tool centre point ends before M30 or M06
         if state.pending.spindle is not ABSENT and state.pending.rpm is not None:
             block.cells[20] = state.pending.rpm  # the speed in RPM, for the listing
         state.pending.rpm = None
@@ -346,12 +361,20 @@ class OutputElement(ModernProgram):
         if block.code in CIRCLE_CODES:
             assert block.radius is not None
             clockwise = (int(block.code) > 0) != self.mirrored[abs(int(block.code)) - 10]
-            code = self.circular_codes.select(block.radius, clockwise)
+            turn = self._rotary_departure(block)
+            code = (
+                circle_code(self.circular_codes, self.rotary_codes, block.radius, clockwise, turn)
+                if turn
+                else self.circular_codes.select(block.radius, clockwise)
+            )
             offsets = [float(v) for v in block.cells[8:11] if v is not ABSENT]
             # R from the arc offsets (an R-word arc, option 252 = 3, has none)
             length = sum(o * o for o in offsets) ** 0.5 if offsets else block.radius
         else:
             code = self.linear_codes.select(max(abs(s) for s in block.steps))
+            turn = self._rotary_departure(block)
+            if turn:
+                code = self.rotary_codes.with_linear(code, turn)
             # a multiaxis move's feed goes by its path in part coordinates (E2, 001
             # L10985-11038), given with the block
             length = block.feed_length or sum((s * self.step) ** 2 for s in block.steps) ** 0.5
@@ -408,6 +431,20 @@ class OutputElement(ModernProgram):
         else:
             block.cut_minutes = length / ipm
         self.cut_minutes += block.cut_minutes
+
+    def _rotary_departure(self, block: Block) -> float:
+        """SELGRO's measure for a multiaxis block (CODE 0 or a circle): the largest rotary
+        departure in DBFSEG 6, 7, 18 (output units), 0.0 when it turns nothing. A
+        five-axis machine by data (machine.kinematics) or absolute output (option
+        251 = 1) has G01/G02/G03 without ranges: 0.0 there too (001 L6052-6069,
+        L6150-6170, L6171-6282)."""
+        machine = self.state.machine
+        if machine.kinematics is not None or machine.number_option(251) == 1:
+            return 0.0
+        return max(
+            (abs(float(v)) for cell in ROTARY_CELLS if (v := block.cells[cell]) is not ABSENT),
+            default=0.0,
+        )
 
     def _cycle(self, block: Block) -> None:
         """A control's canned-cycle block (core/motion/control_cycles.py): its F is the
@@ -537,6 +574,7 @@ class OutputElement(ModernProgram):
         if modern.active:
             if block.cells[13] is not ABSENT:
                 modern.forget()  # a tool change: the next move states every axis
+                self.words.previous_g = ABSENT  # and its motion G
             if block.cells[14] is not ABSENT and block.cells[14] == self.end_code:
                 modern.ended = True
             elif motion:

@@ -28,6 +28,7 @@ class ModernProgram:
     tool_length_code: float | Absent
     end_code: float | Absent
     inverse_time_code: bool
+    inverse_time_limit: float  # the largest F the register holds: a shorter move is slower
     tcp_on: str
     tcp_off: str
     tcp_active: bool
@@ -81,7 +82,8 @@ class ModernProgram:
             self.words.previous_f = ABSENT  # the control drops F with its feed mode
         if inverse:
             self.words.previous_f = ABSENT  # G93 wants F in every block
-            return feed.ipm / block.feed_length if block.feed_length > 0 else feed.ipm
+            per_minute = feed.ipm / block.feed_length if block.feed_length > 0 else feed.ipm
+            return min(per_minute, self.inverse_time_limit)
         return feed.per_revolution_value if feed.per_revolution else feed.ipm
 
     def _start_block(self, record: int | None) -> None:

@@ -45,6 +45,7 @@ class Pose:
     feed: tuple[float, bool] | None
     tool: int | None
     lintol: float
+    rpm: float | None = None  # the spindle's speed in force (a feed per revolution)
 
 
 class _PoseReader(_Reader):
@@ -55,6 +56,8 @@ class _PoseReader(_Reader):
         self.axis: Point = (0.0, 0.0, 1.0)
         self.poses: list[Pose] = []
         self.lintol = 0.0
+        self.lintol_off = False  # LINTOL/OFF: one-point records untested
+        self.rpm: float | None = None
         self.lengths: dict[int, float] = {}  # T code: LOADTL LENGTH (machine units)
         self._axes: list[Point] = []
 
@@ -76,18 +79,30 @@ class _PoseReader(_Reader):
         super()._target(point, kind, record, arc)
         axis = self._axes.pop(0) if self._axes else self.axis
         text = f"{record.subtype.name}/" + ",".join(f"{v:.4f}" for v in (*point, *axis))
-        self.poses.append(
-            Pose(point, axis, kind, record.where, text, self.feed, self.state.tool, self.lintol)
+        lintol = 0.0 if self.lintol_off and len(record.points) == 1 else self.lintol
+        pose = Pose(
+            point, axis, kind, record.where, text, self.feed, self.state.tool, lintol, self.rpm
         )
+        last = self.poses[-1] if self.poses else None
+        if last is not None and last.tip == pose.tip and last.axis == pose.axis:
+            return  # a point repeated: the tape does not move for it
+        self.poses.append(pose)
 
     def _statement(self, statement: Statement) -> None:
         super()._statement(statement)
         major = statement.major
         if major == "LINTOL":
             numbers = statement.numbers()
-            if "OFF" in statement.words() or not numbers:
-                return  # (LINTOL/OFF leaves one-point records untested: kept as in force)
-            self.lintol = self.units.length(abs(numbers[0]))
+            words = statement.words()
+            if "OFF" in words or "ON" in words:
+                self.lintol_off = "OFF" in words  # (one-point records untested under OFF)
+            if numbers:
+                self.lintol = self.units.length(abs(numbers[0]))
+                self.lintol_off = False  # (LINTOL/r tests one-point records again)
+        elif major == "SPINDL":
+            numbers = statement.numbers()
+            if numbers and "OFF" not in statement.words():
+                self.rpm = abs(numbers[0])
         elif major in ("LOADTL", "TOOLNO") and self.state.tool is not None:
             args = statement.args
             for index, arg in enumerate(args[:-1]):
@@ -186,6 +201,11 @@ class FiveAxisKinematics:
         self.rollover = tuple(axis.wrap == "rollover" for axis in chain.axes)
         self.table_radius = machine.number_option(112)
         self.head_radius = machine.number_option(128)
+        self.step = machine.number_option(14)
+        f_format = machine.registers.formats[11]
+        self.inverse_limit = (
+            10.0**f_format.left - 10.0**-f_format.right if f_format is not None else 1e9
+        )
 
     def angles(self, move: TapeMove) -> tuple[float, float]:
         first, second = (move.rotary[axis.column - 3] for axis in self.chain.axes)
@@ -250,6 +270,14 @@ def compare_poses(
             and _angle(axis, pose.axis) <= axis_tolerance
         )
         feed_move = move.kind == "feed"
+        if (
+            not reached
+            and previous is not None
+            and all(abs(tip[a] - previous.tip[a]) <= tolerance for a in range(3))
+            and _angle(axis, previous.axis) <= axis_tolerance
+        ):
+            before, before_tip = move, tip  # still at the CL point just reached (a turn there)
+            continue
         if feed_move and pose.kind == "rapid" and not reached:
             result.miss = Miss(pose, move, "a feed move where the CL moves at rapid")
             return result
@@ -300,44 +328,58 @@ def _feed(
     before_tip: Point,
     decimals: int,
 ) -> str | None:
-    """The tip's feed against the CL's: F itself under G94, the tip's path times F under
-    G93 (to F's rounding and the positions')."""
+    """The tip's feed against the CL's: F itself under G94 (G95), and under G93 the move's
+    minutes: the tip's path in the part at the CL feed, or for a turn of the tool alone (a
+    tip that moves less than a step) each axis's arc at its radius (options 112, 128), F
+    held to what its register holds; to F's rounding and the positions'."""
     if pose.feed is None:
         return None
-    wanted = pose.feed[0]
+    value, per_revolution = pose.feed
     path = sqrt(sum((tip[a] - before_tip[a]) ** 2 for a in range(3)))
     half = 0.5 * 10.0**-decimals
-    if move.inverse_time:
-        # rs274 reports G93's F as a feed over the move's X, Y, Z travel (over A, B, C
-        # when the slides stand): F itself is that over the travel
-        travel = sqrt(sum((move.end[a] - before.end[a]) ** 2 for a in range(3)))
-        turns = [move.rotary[a] - before.rotary[a] for a in range(3)]
-        measure = travel if travel > 1e-9 else sqrt(sum(t * t for t in turns))
-        inverse = move.feed / measure if measure > 0 else move.feed
-        # the move takes its tip's path at the CL feed, or longer where the slides travel
-        # farther or an axis sweeps a longer arc at its radius (options 112, 128)
-        angles = kinematics.angles(move)
-        start = kinematics.angles(before)
-        swept = kinematics.chain.swing(
-            kinematics.turns(start, angles),
-            kinematics.table_radius,
-            kinematics.head_radius,
-        )
-        length = max(path, travel, swept)
-        if length < 10.0**-decimals:
-            return None
-        result.feeds += 1
-        wanted_inverse = wanted / length
-        if abs(inverse - wanted_inverse) > half + wanted_inverse * 0.002 + 1e-9:
+    turns = kinematics.turns(kinematics.angles(before), kinematics.angles(move))
+    turning = any(abs(t) > 1e-9 for t in turns)
+    if not move.inverse_time:
+        if turning and not kinematics.chain.tool_centre_point:
             return (
-                f"G93's F is {inverse:.4f} (1/min), the CL's feed over this move's "
-                f"{length:.4f} gives {wanted_inverse:.4f}"
+                "a move that turns the part under G94: F is the slides' feed, not the tool "
+                "tip's (the post times such moves, G93)"
             )
+        result.feeds += 1
+        if abs(move.feed - value) > half + 1e-9:
+            return f"F is {move.feed:.4f}, the CL's feed {value:.4f}"
+        return None
+    if per_revolution:
+        if pose.rpm is None:
+            return None
+        value *= pose.rpm
+    # rs274 reports G93's F as a feed over the move's X, Y, Z travel (over A, B, C when the
+    # slides stand), and never below 0.1
+    travel = sqrt(sum((move.end[a] - before.end[a]) ** 2 for a in range(3)))
+    written = [move.rotary[a] - before.rotary[a] for a in range(3)]  # (rs274: no rollover)
+    measure = travel if travel > 1e-9 else sqrt(sum(t * t for t in written))
+    if measure <= 0.0:
+        return None
+    inverse = move.feed / measure
+    swing = kinematics.chain.swing(turns, kinematics.table_radius, kinematics.head_radius)
+    step = kinematics.step
+    lengths = [length for length in (path, swing) if length > 0.0]
+    if path < 2.0 * step:  # (the post's "less than a step" on the unrounded path)
+        lengths = [swing] + ([path] if path >= step / 2 else [])
+    if not lengths or max(lengths) <= 0.0:
         return None
     result.feeds += 1
-    if abs(move.feed - wanted) > half + 1e-9:
-        return f"F is {move.feed:.4f}, the CL's feed {wanted:.4f}"
-    return None
+    expected = []
+    for length in lengths:
+        wanted = min(value / length, kinematics.inverse_limit)
+        if move.feed <= 0.1 + 1e-9 and wanted * measure < 0.1:
+            return None  # (rs274's floor: F is not read back)
+        # the tape's positions are rounded to the step: its path is off by up to 2 steps
+        allowed = half + wanted * (2.0 * sqrt(3.0) * step / length + 1e-4) + 1e-9
+        if abs(inverse - wanted) <= allowed:
+            return None
+        expected.append(f"{wanted:.4f} over {length:.4f}")
+    return f"G93's F is {inverse:.4f} (1/min), the CL's feed gives {' or '.join(expected)}"
 
 
 def _linearity(
