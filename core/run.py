@@ -23,6 +23,7 @@ from gecent.core.cl.records import (
     Record,
     Statement,
     Surface,
+    Word,
 )
 from gecent.core.cl.stream import Lookahead
 from gecent.core.cl.vocabulary import vocabulary
@@ -41,6 +42,7 @@ from gecent.core.errors import (
 )
 from gecent.core.feed.rapid import MODAL, RapidTraverse
 from gecent.core.machine.definition import MachineDefinition
+from gecent.core.machine.selection import POSTPROCESSOR_NAME
 from gecent.core.macros.engine import MacroEngine
 from gecent.core.macros.install import install_macros
 from gecent.core.macros.table import MacroTable
@@ -103,6 +105,9 @@ class Run(Elements):
         self.report = report
         self.state = PostState(machine)
         self.finished = False
+        # a MACHIN/GECENT statement was read: the file was written for this postprocessor,
+        # whose CL tapes always end with FINI (end of file before it is an error)
+        self.written_for_gecent = False
         self.quiet = False  # warnings dropped (a multihead record head 1 has warned about)
         self._file = ""
         self._record: Record | None = None
@@ -304,6 +309,8 @@ class Run(Elements):
                     self.warn(self.units.unstated(record.where))
             self._motion_record(record)
         elif isinstance(record, Statement):
+            if record.major == "MACHIN" and _names_gecent(record):
+                self.written_for_gecent = True
             handler = self._statements.get(record.major)
             if handler is not None:
                 handler(self, record)
@@ -343,6 +350,15 @@ class Run(Elements):
 
     def _finish(self) -> RunResult:
         if not self.finished:
+            if self.written_for_gecent:
+                # "EOF counts as an error": a CL tape made for GECENT always ends with FINI,
+                # so one without is cut short (001 L2650-2656; docs/decisions.md)
+                last = self._record
+                raise InputError(
+                    "the CL file ends without FINI: a file written for GECENT (it has "
+                    "MACHIN/GECENT) ends with FINI, so this one is cut short",
+                    last.where if last is not None else SourcePosition(self._file),
+                )
             # CAM systems end files without FINI (NX: END-OF-PATH): the program ends as at
             # FINI, with the warning (docs/decisions.md)
             self.warn(Diagnostic("NO FINI STATEMENT AT THE END OF THE CL FILE"))
@@ -498,6 +514,12 @@ class Run(Elements):
 
 def _units(run: Post, statement: Statement) -> None:
     run.units.set_units(statement)
+
+
+def _names_gecent(statement: Statement) -> bool:
+    """MACHIN/GECENT,...: the statement names this postprocessor."""
+    args = statement.args
+    return bool(args) and isinstance(args[0], Word) and args[0].name == POSTPROCESSOR_NAME
 
 
 CURVE_WORDS = frozenset({"NURBS", "KNOT", "CNTRL", "SPLINE", "BSPLINE"})

@@ -1,4 +1,4 @@
-"""The spindle: SPINDL with RPM, ON and OFF (manual §4.5, subroutine SPINDL 001
+"""The spindle: SPINDL with RPM, ON, OFF and NEUTRL (manual §4.5, subroutine SPINDL 001
 L37566-37637; options 19, 27, 34, 89, 127, 129), read in docs/research/spindle-tool.md.
 
 The kernel keeps the spindle's state and its M codes; the spindle-type plugin selected by
@@ -22,6 +22,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from math import inf
 
+from gecent.core.absent import ABSENT
 from gecent.core.cl.records import Arg, Statement, Word
 from gecent.core.errors import (
     Diagnostic,
@@ -95,11 +96,19 @@ class SpindleElement:
             else:
                 self.spindle_type = spindle_type(self.type_number)
         self._ladder: SpeedLadder | None = None  # the locked range's speeds while in SFM
+        # option 171 = 1: "should redundant S words be output? 1 = no" (001 L26354-26368);
+        # the S command the control holds (None: not known, as after NEUTRL)
+        self.drop_redundant_s = machine.number_option(171) == 1
+        self.s_in_force: float | None = None
 
     def statement(self, statement: Statement) -> None:
         words = [a.name for a in statement.args if isinstance(a, Word)]
         if "SFM" in words:
             self._sfm(statement, words)
+            return
+        if "NEUTRL" in words:
+            self._neutral(statement)
+            self.s_in_force = None  # (option 99's S, or none: not known here)
             return
         unbuilt = [w for w in words if w not in ("RPM", "CLW", "CCLW", "RANGE", "ON", "OFF")]
         if unbuilt:
@@ -364,7 +373,11 @@ class SpindleElement:
         spindle.restart = None  # (a tool change's stop: this SPINDL starts it)
         if selection is not None:
             spindle.speed, spindle.range = selection.speed, selection.range
-            self.state.pending.spindle = selection.command
+            # option 171 = 1: an S the control holds already is not output
+            redundant = self.drop_redundant_s and selection.command == self.s_in_force
+            if not redundant or selection.steps:
+                self.state.pending.spindle = selection.command
+                self.s_in_force = selection.command
             self.state.pending.rpm = selection.speed
             self.state.remember(SPINDLE_COMMAND, selection.command)
             self.state.remember(SPINDLE_RANGE, float(selection.range))
@@ -378,6 +391,9 @@ class SpindleElement:
             return
         if ride:
             return
+        pending = self.state.pending
+        if self.drop_redundant_s and pending.spindle is ABSENT and pending.m_code is ABSENT:
+            return  # its S was redundant (option 171) and it has no M: no block
         self.output.output(Block(Code.NONMOTION, record))
         if selection is not None and range_changed and not selection.steps:
             seconds = machine.number_option(54)
@@ -398,12 +414,36 @@ class SpindleElement:
             if not self.has_s_register:
                 raise NotYetSupported("spindle off by S0 (option 127 = 1) without an S register")
             self.state.pending.spindle = 0.0
+            self.s_in_force = 0.0
             self.state.pending.rpm = 0.0
             self.output.output(Block(Code.NONMOTION, statement.number))
             return
         self.state.remember(SPINDLE_M, None)
         if self.output.store_cell(_OFF_CELL, self.warn, statement.where) is not None:
             self.output.output(Block(Code.AUX_ONLY, statement.number))
+
+    def _neutral(self, statement: Statement) -> None:
+        """SPINDL/NEUTRL (option 99, 001 L25604-25617): the S command option 99 gives, in
+        command form (0.1 punches S00), in a block of its own as any SPINDL's S; option 99
+        = 0 outputs nothing. The speed and range in force stay (a later SPINDL/ON finds
+        them), and the listing's S-RPM shows the command."""
+        if len(statement.args) != 1:
+            raise InputError("SPINDL/NEUTRL takes nothing else", statement.where)
+        machine = self.state.machine
+        command = machine.number_option(99)
+        if command == 0:
+            return
+        if not self.has_s_register:
+            raise MachineDefinitionError(
+                machine.origin,
+                "optab",
+                99,
+                f"option 99 = {command:g} is the S code of SPINDL/NEUTRL, but the machine has "
+                "no S register (REGFOR(12) = 0)",
+            )
+        self.state.pending.spindle = command
+        self.state.pending.rpm = command
+        self.output.output(Block(Code.NONMOTION, statement.number))
 
     def _store(self, cell: int, where: SourcePosition) -> None:
         self.output.store_cell(cell, self.warn, where)

@@ -97,6 +97,8 @@ class Tool:
     offset: int | None = None
     length_pending: bool = False
     length: float | None = None  # LOADTL LENGTH (machine units): a five-axis head's reach
+    large_gripper: bool = False  # GRPLOD: LOAD's gripper (R is option 103 or 105, not 102, 104)
+    ready_to_unload: int | None = None  # TLNOFF: the tool PICKUP put in the spindle
 
 
 @dataclass(slots=True)
@@ -142,6 +144,7 @@ class Modes:
     ended: bool = False
     origin: tuple[float, float, float] = (0.0, 0.0, 0.0)
     compensation: str = ""  # CUTCOM in force: "LEFT", "RIGHT" (or PLUS, MINUS), "" off
+    positioning: int = 0  # MODPOS (POSITN): 0 OFF, 1 FINE, 2 NOBACK, 3 COARSE, 4 CORMIL; < 0 TRAV
 
 
 @dataclass(slots=True)
@@ -230,6 +233,13 @@ class PostState:
     linearity: Linearity = field(default_factory=Linearity)  # LINTOL (multiaxis)
     head: int = 0  # IHEAD of a multihead run's head (0: a single-head run)
     multihead_op: int = 0  # NOP: the last OP/n of this head
+    # core/statements/surfaces.py and control.py (001 L16746-16809, L17958-17961)
+    clearance_plane: float | None = None  # CLERP: CLRSRF's height (machine units)
+    overcenter: float = 0.0  # OVCVAL: OVRCNT/n (0 after OVRCNT/OFF)
+    overcenter_given: float = 0.0  # the last OVRCNT/n, which OVRCNT/ON puts back
+    pen_down: bool = False  # UPFLAG: DRAFT/ON lowered the pen (turret)
+    flame_head: int = 0  # FLAME's IHEAD: 0 MASTER, 1 SLAVE, -1 BOTH
+    weld_off: bool = False  # IGEFLG = 1: WELD/OFF
 
     def remember(self, slot: int, value: float | None) -> None:
         """Record a condition in STATE; while stopped it counts as given again."""

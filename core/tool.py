@@ -1,17 +1,26 @@
-"""Loading a tool on a contouring machine: TOOLNO/n (APT IV's LOADTL/n) and TURRET
-(manual TOOLNO 001 L38733-38799, TOOLGM L38605-38646, TOOLL L38694-38731, TURRET
-L39054-39091, COMTAT L29715-29760, MINMOV L34013-34055, option 96 L25520-25569), read in
-docs/research/spindle-tool.md and docs/research/lathe-tools.md.
+"""Loading a tool on a contouring machine: TOOLNO/n (APT IV's LOADTL/n), TURRET and
+SELECT/TOOL (manual TOOLNO 001 L38733-38799, TOOLGM L38605-38646, TOOLGP L38648-38692, TOOLL
+L38694-38731, TURRET L39054-39091, SELTUL L37287-37335, MINMOV L34013-34055, options 86
+L25406-25434 and 96 L25520-25569), read in docs/research/spindle-tool.md.
 
 * The tool-change M code TABLEM(7) waits for the next block (STOREM); a rotating magazine
   or turret turns CLW (TABLEM 83) or CCLW (84), as programmed or the shorter way (MINMOV,
   option 88 negative).
 * A machine with a T register gets a dwell block of option 83 seconds carrying the T word;
   one without (MACH23) records the tool and outputs nothing.
-* TOOLNO/n, OFSETL, k makes T = n followed by the two offset digits (n x 100 + k).
-* TURRET/t[, p][, OFSETL, k][, FRONT|REAR][, CLW|CCLW] packs tool t, turret position p
-  (default t) and offset k into T by option 96's layout (COMTAT); FRONT and REAR select the
-  turret (TABLEM 29, 30), the index itself is TABLEM(8).
+* TOOLNO/n, OFSETL, k (or ADJUST, k) makes T = n followed by the two offset digits
+  (n x 100 + k); with option 96 = -K the offset is the M code k + K instead (WE-11).
+* TURRET/t[, p[, a, b]][, OFSETL, k][, FRONT|REAR][, CLW|CCLW][, NOW|NEXT] packs tool t,
+  turret position p (default t) and offset k into T by option 96's layout (COMTAT,
+  core/turret.py); a and b are the tool's turret distances, NOW and NEXT its corrective
+  move; FRONT and REAR select the turret (TABLEM 29, 30), the index itself is TABLEM(8).
+* SELECT/TOOL, n[, OFSETL, k] preselects the next tool: TABLEG(1) and T in a CODE -4 block.
+
+Tool length, LENGTH, l (TOOLEN; PREVTL the last length): on a mill or a lathe a change of
+length moves the previous point along the machine's Z (TOOLGM, TOOLL), so the next move
+carries it, with the information block 1; on a positioning machine option 86 puts it in
+the Z translation (+1: the change since the first tool; +2: less the length; negative:
+POSMOV adds the length, core/motion/positioning.py).
 
 On a positioning machine (TOOLGP) the T goes out at once with the cycle-off G code TABLEG(1)
 in a CODE -1 block, and the output adds the spindle command to it (option 1 = 1).
@@ -21,14 +30,14 @@ ADJUST h, OFSETL k or the tool number. A mill (263 = 1) gives it as H with G43 i
 move after the tool change and as D with CUTCOM; LOADTL LENGTH is accepted, since the control
 holds the lengths. A lathe (263 = 2) punches T as station and offset, two digits each.
 
-The manual's tool-length corrections (LENGTH, ADJUST without option 263), turret corrective
-moves (NOW, NEXT), TURRET on a positioning machine and T merged into the next motion block
-(option 1 = 2) are not built and stop the run with an error naming them.
+TURRET on a positioning machine and T merged into the next motion block (option 1 = 2) are
+not built and stop the run with an error naming them.
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable
+from dataclasses import replace
 
 from gecent.core.cl.records import Statement, Word
 from gecent.core.errors import Diagnostic, InputError, NotYetSupported, SourcePosition
@@ -42,23 +51,16 @@ from gecent.core.output.modern import (
     TOOL_LENGTH_REGISTER,
 )
 from gecent.core.state import SPINDLE_COMMAND, SPINDLE_M, T_CODE, PostState
+from gecent.core.turret import MACHINE_Z, TurretCorrection, cl_deltas, comtat, shift_previous
 
 TOOL_CHANGE, TURRET_INDEX, FRONT_TURRET, REAR_TURRET = 7, 8, 29, 30
 TURN_CLW, TURN_CCLW = 83, 84
 _DIRECTIONS = {"CLW": TURN_CLW, "CCLW": TURN_CCLW}
 _TURRETS = {"FRONT": FRONT_TURRET, "REAR": REAR_TURRET}
-
-# option 96: the T word's fields, first digit first, with their digit counts (001
-# L25532-25560). The OCR damaged the type column; 0 and 3-6 are legible, 2 is the sample
-# lathe's five-digit layout (MACH04: option 96 = 2, T format 50); 1 and 7 are not built.
-T_LAYOUTS: dict[int, tuple[tuple[str, int], ...]] = {
-    0: (("tool", 0),),
-    2: (("offset", 2), ("tool", 2), ("position", 1)),
-    3: (("tool", 1), ("position", 1)),
-    4: (("tool", 1), ("offset", 1)),
-    5: (("offset", 1), ("tool", 1)),
-    6: (("offset", 1), ("tool", 1), ("position", 1)),
-}
+_CORRECTIONS = ("NOW", "NEXT")
+TOOL_LENGTH_CHANGE = 1.0  # information block 1: the tool correction (001 L22194-22197)
+LENGTH_ZERO = "TOOL LENGTH IS ZERO"  # comment 19 (its text is not in the manual's scan)
+PRESELECTED = "PREVIOUSLY SELECTED TOOL WAS NOT LOADED - PRESENT TOOL IS SELECTED"
 
 
 class ToolElement:
@@ -70,15 +72,19 @@ class ToolElement:
         self.warn = warn
         self.position: int | None = None  # FFRSTL: where the magazine or turret stands
         self.length_scale: Callable[[float], float] = float  # CL units to the machine's
+        self.turret_correction = TurretCorrection(state, output, warn)
+        self.first_length: float | None = None  # the first tool's length (FORK, PREVTL)
+        self.previous_length: float | None = None  # PREVTL
+        self.length_term = 0.0  # option 86 = 1 or 2: the length in the Z translation
+        self.selected: int | None = None  # TOLSLC: SELECT/TOOL's tool, not yet loaded
 
     def statement(self, statement: Statement) -> None:
-        """TOOLNO/n[, OFSETL, k][, CLW|CCLW], and on a modern control [, LENGTH, l][, ADJUST, h]."""
+        """TOOLNO/n[, OFSETL, k][, ADJUST, k][, LENGTH, l][, CLW|CCLW]."""
         offsets = int(self.state.machine.number_option(263))
-        allowed = ("OFSETL", "CLW", "CCLW") + (("LENGTH", "ADJUST") if offsets else ())
+        allowed = ("OFSETL", "CLW", "CCLW", "LENGTH", "ADJUST")
         tool, words, offset = self._parse(statement, allowed=allowed)
         if not offsets:
-            t_code = tool if offset is None else tool * 100 + offset
-            self._load(statement, tool, t_code, words, index_cell=None)
+            self._manual_load(statement, tool, words, offset)
             return
         modes = self.state.modes
         if modes.compensation:
@@ -123,27 +129,77 @@ class ToolElement:
             and machine.registers.formats[TOOL_LENGTH_REGISTER] is not None
         )
 
+    def _manual_load(
+        self, statement: Statement, tool: int, words: list[str], offset: int | None
+    ) -> None:
+        """TOOLNO as the manual makes it: OFSETL (or APT IV's ADJUST) in T or as option
+        96's M code, then the tool-length correction."""
+        adjust = _value_after(statement, "ADJUST")
+        if adjust is not None and offset is not None:
+            raise InputError(f"{statement.major} takes one of OFSETL and ADJUST", statement.where)
+        number = adjust if adjust is not None else offset
+        length = self._manual_length(statement)
+        offset_m = self._offset_m(number)
+        t_code = tool if number is None or offset_m is not None else tool * 100 + number
+        self._load(statement, tool, t_code, words, index_cell=None, offset_m=offset_m)
+        if length is not None:
+            self._length_change(statement, length)
+
+    def select_tool(self, statement: Statement) -> None:
+        """SELECT/TOOL, n[, OFSETL, k] (SELTUL): the next tool, preselected in a CODE -4
+        block of TABLEG(1) and T; a selection not yet loaded is replaced, with a comment."""
+        selection = replace(statement, major="SELECT/TOOL", args=statement.args[1:])
+        tool, _, offset = self._parse(selection, allowed=("OFSETL",))
+        if self.selected is not None:
+            self.warn(Diagnostic(PRESELECTED, statement.where))
+        self.selected = tool
+        machine = self.state.machine
+        if machine.registers.formats[13] is None:
+            return  # no T register: the selection is the operator's
+        offset_m = self._offset_m(offset)
+        block = Block(Code.G_ONLY, statement.number)
+        cycle_off = machine.g_code(1)
+        if cycle_off is not None:
+            block.cells[2] = float(cycle_off)
+        block.cells[13] = tool if offset is None or offset_m is not None else tool * 100 + offset
+        if offset_m is not None:
+            self.output.store_m(offset_m)
+        self.output.output(block)
+
     def turret(self, statement: Statement) -> None:
-        """TURRET/t[, p][, OFSETL, k][, FRONT|REAR][, CLW|CCLW]: COMTAT's T word."""
-        allowed = ("OFSETL", "CLW", "CCLW", "FRONT", "REAR")
-        tool, words, offset = self._parse(statement, allowed=allowed, positions=2)
+        """TURRET/t[, p[, a, b]][, OFSETL, k][, FRONT|REAR][, CLW|CCLW][, NOW|NEXT]."""
+        allowed = ("OFSETL", "CLW", "CCLW", "FRONT", "REAR", *_CORRECTIONS)
+        tool, words, offset = self._parse(statement, allowed=allowed, positions=4)
         numbers = _plain_numbers(statement)
         position = int(numbers[1]) if len(numbers) > 1 else tool
+        where = statement.where
+        if len(numbers) == 3:
+            raise InputError("TURRET gives the tool's distances as a pair: t, p, a, b", where)
+        when = [w for w in words if w in _CORRECTIONS]
+        if len(when) > 1:
+            raise InputError("TURRET takes one of NOW and NEXT", where)
+        offset_m = None
         if self.state.machine.number_option(263) == LATHE_OFFSETS:
             # a modern lathe: the station, then the offset (OFSETL, else the tool number)
             number = offset if offset is not None else tool
             if position > 99 or number > 99:
                 raise InputError(
-                    f"TURRET station {position} and offset {number} must be 0-99 each",
-                    statement.where,
+                    f"TURRET station {position} and offset {number} must be 0-99 each", where
                 )
             t_code = position * 100 + number
         else:
-            t_code = self._comtat(tool, position, offset or 0, statement.where)
+            offset_m = self._offset_m(offset)
+            t_code = comtat(self.state.machine, tool, position, offset or 0, where)
         for word in words:
             if word in _TURRETS:
-                self._store(_TURRETS[word], statement.where)
-        self._load(statement, position, t_code, words, index_cell=TURRET_INDEX)
+                self._store(_TURRETS[word], where)
+        self._load(statement, position, t_code, words, index_cell=TURRET_INDEX, offset_m=offset_m)
+        distances = (
+            (self.length_scale(numbers[2]), self.length_scale(numbers[3]))
+            if len(numbers) == 4
+            else None
+        )
+        self.turret_correction.index(where, statement.number, distances, when[0] if when else None)
 
     def _parse(
         self, statement: Statement, allowed: tuple[str, ...], positions: int = 1
@@ -152,8 +208,6 @@ class ToolElement:
         where = statement.where
         words = [a.name for a in statement.args if isinstance(a, Word)]
         for word in words:
-            if word in ("LENGTH", "ADJUST", "NOW", "NEXT") and word not in allowed:
-                raise NotYetSupported(f"{statement.major}/{word}", where)
             if word not in allowed:
                 raise InputError(
                     f"{statement.major} does not take {word}; expected {', '.join(allowed)}",
@@ -167,31 +221,74 @@ class ToolElement:
             raise NotYetSupported("T merged into the following motion block (option 1 = 2)", where)
         numbers = _plain_numbers(statement)
         offset = _value_after(statement, "OFSETL")
-        if not 1 <= len(numbers) <= positions or any(n < 0 or n != int(n) for n in numbers):
-            expected = "one tool number" if positions == 1 else "a tool and a turret position"
+        # a turret's distances a, b may be any length; the tool and position are counts
+        counted = numbers[:2] if positions > 1 else numbers
+        if not 1 <= len(numbers) <= positions or any(n < 0 or n != int(n) for n in counted):
+            expected = (
+                "one tool number"
+                if positions == 1
+                else "a tool, a turret position and the tool's distances a, b"
+            )
             raise InputError(
                 f"{statement.major} expects {expected}, whole numbers >= 0", statement.where
             )
         return int(numbers[0]), words, offset
 
-    def _comtat(self, tool: int, position: int, offset: int, where: SourcePosition) -> int:
-        """COMTAT: the fields of option 96's layout, packed first digit first."""
-        layout_type = int(self.state.machine.number_option(96))
-        layout = T_LAYOUTS.get(layout_type)
-        if layout is None:
-            raise NotYetSupported(f"T-word layout type {layout_type} (option 96)", where)
-        values = {"tool": tool, "position": position, "offset": offset}
-        code = 0
-        for field, digits in layout:
-            value = values[field]
-            if digits and value >= 10**digits:
-                raise InputError(
-                    f"TURRET {field} {value} does not fit the {digits} digit(s) option 96 = "
-                    f"{layout_type} gives it",
-                    where,
-                )
-            code = code * 10**digits + value if digits else value
-        return code
+    def _offset_m(self, offset: int | None) -> float | None:
+        """Option 96 = -K: the offset k as the M code k + K (001 L25564-25568, WE-11)."""
+        layout = self.state.machine.number_option(96)
+        if offset is None or layout >= 0:
+            return None
+        return float(offset + abs(int(layout)))
+
+    def _manual_length(self, statement: Statement) -> float | None:
+        """LENGTH, l in the machine's units; zero is comment 19, negative bad input."""
+        if "LENGTH" not in statement.words():
+            return None
+        length = statement.value_after("LENGTH")
+        if length is None:
+            raise InputError(f"{statement.major} LENGTH expects a length", statement.where)
+        if length < 0:
+            raise InputError(
+                f"{statement.major} LENGTH expects a length >= 0, found {length:g}",
+                statement.where,
+            )
+        if length == 0:
+            self.warn(Diagnostic(LENGTH_ZERO, statement.where))
+        return self.length_scale(length)
+
+    def _length_change(self, statement: Statement, length: float) -> None:
+        """TOOLEN and PREVTL: the first length is the reference; a later change corrects
+        Z on a contouring machine (TOOLGM, TOOLL) or the Z translation on a positioning
+        one (TOOLGP, option 86)."""
+        machine = self.state.machine
+        self.state.tool.length = length
+        if self.first_length is None:
+            self.first_length = self.previous_length = length
+        change = length - (self.previous_length or 0.0)
+        self.previous_length = length
+        if machine.number_option(1) != 0:
+            self._positioning_length(length)
+            return
+        if not change or machine.number_option(251) == 1:
+            return  # an absolute control holds the lengths itself
+        # the gauge point moves up by a longer tool's extra length: the next move carries it
+        shift_previous(self.state, cl_deltas(self.output, {MACHINE_Z: change}))
+        block = Block(Code.INFORMATION, statement.number)
+        block.cells[2] = TOOL_LENGTH_CHANGE
+        block.cells[3] = change
+        self.output.emit(block)
+
+    def _positioning_length(self, length: float) -> None:
+        """Option 86 (001 L25406-25434): +1 adds the change since the first tool to the Z
+        translation (TOOLGP's TRANSL(3)), +2 takes the length off Z; 0 and negative values
+        leave the translation alone (negative: POSMOV adds the length)."""
+        option = self.state.machine.number_option(86)
+        assert self.first_length is not None
+        term = length - self.first_length if option == 1 else -length if option == 2 else 0.0
+        x, y, z = self.state.position.translation
+        self.state.position.translation = (x, y, z + term - self.length_term)
+        self.length_term = term
 
     def _load(
         self,
@@ -200,9 +297,11 @@ class ToolElement:
         t_code: int,
         words: list[str],
         index_cell: int | None,
+        offset_m: float | None = None,
     ) -> None:
         machine = self.state.machine
         self.state.tool.number = station
+        self.selected = None  # a load takes the preselected tool
         has_t = machine.registers.formats[13] is not None
         if has_t:
             self.state.remember(T_CODE, t_code)
@@ -214,6 +313,8 @@ class ToolElement:
             direction = self._shorter_way(station)
         if direction is not None:
             self._store(direction, statement.where)
+        if offset_m is not None:
+            self.output.store_m(offset_m)
         self.position = station
         if has_t and machine.number_option(1) != 0:
             # TOOLGP: the cycle-off G code and the T in a CODE -1 block (001 L38648-38692)

@@ -148,10 +148,10 @@ def test_origin_in_the_operator_printout() -> None:
     plain = post(["FROM/5,2,0"], lathe)
     shifted = post(["ORIGIN/1,0.5,0", "FROM/5,2,0"], lathe)
     printout = get_plugins().get("printouts", 1)
-    assert "+5.0000" in printout.render(lathe, plain.blocks, "")
+    assert "+0005.0000" in printout.render(lathe, plain.blocks, "")  # W9's leading zeros
     text = printout.render(lathe, shifted.blocks, "")
     line = next(row for row in text.splitlines() if row.startswith("FROM"))
-    assert "-1.5000" in line and "+4.0000" in line
+    assert "-0001.5000" in line and "+0004.0000" in line
 
 
 def test_air_codes_by_themselves() -> None:

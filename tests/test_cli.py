@@ -107,7 +107,7 @@ def test_post_machine_override_and_option_change(
     source.write_text("PARTNO X\nMACHIN/GECENT,23,OPTAB,7,3\nFINI\n")
     code, _, err = run("post", str(source), "--machine", "4")
     assert code == 0
-    assert "MACHIN/GECENT,23 IGNORED: THE RUN USES MACHINE 4 (mach04)" in err
+    assert "MACHIN/GECENT,23: THE RUN USES MACHINE 4 (mach04); ONLY THE MACHINE NUMBER" in err
     assert "OPTION 7 (spindle_range_count) CANNOT BE CHANGED BY MACHIN" in err
     assert "SAMPLE LATHE" in (tmp_path / "p.lis").read_text()
 
@@ -117,10 +117,10 @@ def test_unsupported_statement_stops_without_output(
 ) -> None:
     monkeypatch.chdir(tmp_path)
     source = tmp_path / "u.apt"
-    source.write_text("PARTNO X\nMACHIN/GECENT,23\nWELD/ON\nFINI\n")
+    source.write_text("PARTNO X\nMACHIN/GECENT,23\nSAFETY/ON\nFINI\n")
     code, _, err = run("post", str(source))
     assert code == 3
-    assert err.strip() == f"{source}:3 (record 3): error: not yet supported: WELD statement"
+    assert err.strip() == f"{source}:3 (record 3): error: not yet supported: SAFETY statement"
     assert not (tmp_path / "u.tape").exists() and not (tmp_path / "u.lis").exists()
     assert [p.name for p in tmp_path.iterdir()] == ["u.apt"]  # no temporary left either
 

@@ -108,6 +108,6 @@ def test_the_listing_prints_positions_feeds_and_speeds() -> None:
     speeds = [line.split()[-1] for line in lines if line.strip().startswith(("010", "022"))]
     assert speeds == ["1060.", "710."]
     bore = next(line for line in lines if line.strip().startswith("040  85"))
-    assert bore.split()[-1] == "2.5" and "+1.0000" in bore and "+6.0000" in bore
+    assert bore.split()[-1] == "2.5" and "+0001.0000" in bore and "+0006.0000" in bore
     origin = next(line for line in lines if line.startswith("FROM"))
-    assert origin.split()[1:] == ["+0.0000", "+0.0000", "+6.0000"]
+    assert origin.split()[1:] == ["+0000.0000", "+0000.0000", "+0006.0000"]  # W9

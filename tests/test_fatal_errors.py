@@ -110,3 +110,41 @@ def test_fatal_139_and_142_guard_the_segmentation() -> None:
         CircularCodes(machine).select(12.0, True)
     assert circle.value.number == 142 and circle.value.exit_status == 1
     assert "Circle radius too large" in str(circle.value)
+
+
+def test_fatal_19_the_from_points_tool_axis_is_not_a_unit_vector(tmp_path: Path) -> None:
+    """FROM5 tests the direction cosines of the FROM point: |I² + J² + K² - 1| > e is
+    error 19 (001 L28364-28380, L31445-31460). A later point's axis is only warned about."""
+    program = ["MACHIN/GECENT,40", "MULTAX", "FROM/-19,48,31.75,0,0,2"]
+    code, err, tape, listing = run(tmp_path, [*program, "FEDRAT/10", "GOTO/-18,48,31.75"], None)
+    assert code == 1 and not tape.exists()
+    assert "fatal error 19 (FROMS): Direction cosines of the FROM point" in err
+    assert "|i, j, k| = 2" in err and "part.apt:3 (record 3)" in err
+    assert "*** GEDUMP ***" in listing.read_text()
+    unit = ["MACHIN/GECENT,40", "MULTAX", "FROM/-19,48,31.75,0,0,1", "FEDRAT/10"]
+    code, err, tape, _ = run(tmp_path, [*unit, "GOTO/-18,48,31.75,0,0,2"], None)
+    assert code == 0 and tape.exists()
+    assert "NOT A UNIT VECTOR; THEY ARE NORMALIZED" in err
+
+
+def test_fatal_39_a_rotary_departure_beyond_option_111() -> None:
+    """SELGRO's error 39, "rotary move is greater than maximum departure - it should have
+    been segmented" (001 L37125-37135): SEGMNT cuts every turn to option 111 first, so no
+    CL input reaches it; it is triggered at the selector, for a line and for a circle."""
+    from gecent.core.errors import FatalError
+    from gecent.core.machine.loader import load_machine_text
+    from gecent.core.motion.gcode import CircularCodes, RotaryCodes, circle_code
+
+    machine = load_machine_text(
+        '[machine]\nname = "r"\ntitle = "R"\n[tableg]\n11 = 10\n12 = 11\n13 = 12\n', "r.toml"
+    )
+    rotmax = machine.number_option(111)  # 35.99964 degrees
+    rotary = RotaryCodes(machine, rotmax)
+    assert rotary.select(rotmax).code == 10  # at the limit: TABLEG(11)
+    with pytest.raises(FatalError) as line:
+        rotary.select(40.0)
+    assert line.value.number == 39 and line.value.exit_status == 1
+    assert "Rotary departure too large; it should have been segmented" in str(line.value)
+    with pytest.raises(FatalError) as circle:
+        circle_code(CircularCodes(machine), rotary, 0.05, True, 40.0)
+    assert circle.value.number == 39

@@ -110,8 +110,9 @@ def test_an_offset_beyond_two_digits_is_refused(tmp_path: Path) -> None:
     assert status == 2 and "ADJUST expects an offset number 0-99, found 100" in output
 
 
-def test_the_manuals_machines_still_refuse_tool_lengths(tmp_path: Path) -> None:
-    """Without option 263 LENGTH is the manual's tool-length correction, not built yet."""
+def test_the_manuals_machines_take_tool_lengths(tmp_path: Path) -> None:
+    """Without option 263 LENGTH is the manual's tool-length correction (issue 22,
+    tests/test_tools_manual.py): the run posts."""
     text = "PARTNO M\nLOADTL/1,LENGTH,5\nFROM/0,0,0\nFINI\n"
     status, _, output = post(tmp_path, text, "23")
-    assert status == 3 and "not yet supported: LOADTL/LENGTH" in output
+    assert status == 0, output

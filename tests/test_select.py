@@ -60,9 +60,6 @@ def test_a_code_the_machine_lacks_is_comment_22(statement: str) -> None:
 @pytest.mark.parametrize(
     ("statement", "feature"),
     [
-        ("SELECT/OFSETL,1,2,3,4", "SELECT/OFSETL"),
-        ("SELECT/TABLE,1", "SELECT/TABLE"),
-        ("SELECT/TOOL,5", "SELECT/TOOL"),
         ("SELECT/SADDLE", "SELECT/SADDLE"),
     ],
 )

@@ -5,7 +5,7 @@ register); readings in docs/research/spindle-tool.md, decisions in docs/decision
 from __future__ import annotations
 
 import pytest
-from gecent.core.errors import InputError, NotYetSupported
+from gecent.core.errors import InputError
 from gecent.core.feed.magic3 import magic3
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.plugins import get_plugins
@@ -71,7 +71,6 @@ def test_tool_change_on_a_mill_with_a_t_register_is_a_dwell_block() -> None:
 @pytest.mark.parametrize(
     ("statement", "error"),
     [
-        ("LOADTL/1,LENGTH,5", NotYetSupported),
         ("LOADTL/1.5", InputError),
         ("SPINDL/100,200", InputError),
         ("SPINDL/OFF,100", InputError),

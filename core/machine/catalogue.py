@@ -58,6 +58,9 @@ class OptionSpec(_Frozen):
     meaning: str
     values: str
     seed: str
+    # why nothing reads the option: "none: ..." (no effect in a post-processor) or
+    # "missing: ..." (its feature is not built); docs/checklist.md lists both
+    effect: str | None = Field(default=None, pattern=r"^(none|missing): \S")
 
 
 class LocationSpec(_Frozen):

@@ -1,6 +1,6 @@
 """Choosing the machine for a run and changing its options from the part program
-(MACHIN/GECENT, nm [, OPTAB, n, v ...] [, LINEAR | LINCIR | PLAN]; manual §5.6, 001
-L22352-22366, L24225-24262).
+(MACHIN/GECENT, nm [, OPTAB, n, v ...] [, LINEAR | LINCIR | PLAN] [, OFF] and MACHIN/OFF;
+manual §5.6, 001 L22352-22366, L24225-24262; the MACHIN subroutine, L33974-34011).
 """
 
 from __future__ import annotations
@@ -26,6 +26,12 @@ from gecent.core.plugins import PluginSet
 POSTPROCESSOR_NAME = "GECENT"
 # Options that must be given in output units when set by MACHIN (001 L24258-24262).
 OUTPUT_UNIT_OPTIONS = frozenset({149, 150})
+# Options the non-reassignable list names (001 L24250-24256) that the manual itself tells
+# the part programmer to change by MACHIN: the part radius on the rotary table, "changed by
+# the MACHIN statement as MACHIN/GECENT, n, OPTAB, 112, r" (001 L10945-10963).
+CHANGED_BY_MACHIN_DESPITE_LIST = frozenset({112})
+TRANSFORM_CLASS = 116  # option 116: the multiaxis transform class (001 L25771-25777)
+OFF = "OFF"
 
 
 @dataclass
@@ -35,6 +41,17 @@ class MachinRequest:
     number: int | None
     options: list[tuple[int, float, SourcePosition]] = field(default_factory=list)
     modifiers: list[str] = field(default_factory=list)
+
+    @property
+    def off(self) -> bool:
+        """The OFF modifier (MACHIN/GECENT, nm, ..., OFF)."""
+        return OFF in self.modifiers
+
+
+def is_machin_off(statement: Statement) -> bool:
+    """MACHIN/OFF on its own (001 L26678-26687, L33992): it names no postprocessor."""
+    args = statement.args
+    return len(args) == 1 and isinstance(args[0], Word) and args[0].name == OFF
 
 
 def parse_machin(statement: Statement) -> MachinRequest | None:
@@ -72,12 +89,12 @@ def parse_machin(statement: Statement) -> MachinRequest | None:
                 pairs += 1
             if pairs == 0:
                 raise InputError("OPTAB must be followed by option number, value pairs", where)
-        elif isinstance(arg, Word) and arg.name in ("LINEAR", "LINCIR", "PLAN"):
+        elif isinstance(arg, Word) and arg.name in ("LINEAR", "LINCIR", "PLAN", OFF):
             request.modifiers.append(arg.name)
             position += 1
         else:
             raise InputError(
-                f"MACHIN/GECENT: expected OPTAB, LINEAR, LINCIR or PLAN, found {arg}", where
+                f"MACHIN/GECENT: expected OPTAB, LINEAR, LINCIR, PLAN or OFF, found {arg}", where
             )
     return request
 
@@ -90,6 +107,8 @@ def first_machin(records: Iterable[Record]) -> tuple[MachinRequest | None, list[
         if isinstance(record, Motion):
             break
         if isinstance(record, Statement) and record.major == "MACHIN":
+            if is_machin_off(record):
+                continue  # it selects no machine (the run prints option 218's totals)
             request = parse_machin(record)
             if request is not None:
                 return request, notes
@@ -142,7 +161,12 @@ def apply_machin_options(
                 where,
             )
         spec = cat.option(number)
-        if spec.fixed:
+        if number == TRANSFORM_CLASS:
+            refused = _class_change_refused(machine, value)
+            if refused is not None:
+                notes.append(Diagnostic(refused, where))
+                continue
+        if spec.fixed and number not in CHANGED_BY_MACHIN_DESPITE_LIST:
             notes.append(
                 Diagnostic(
                     f"OPTION {number} ({spec.alias}) CANNOT BE CHANGED BY MACHIN; VALUE IGNORED",
@@ -160,6 +184,8 @@ def apply_machin_options(
         else:
             changes[number] = value
     for modifier in request.modifiers:
+        if modifier == OFF:
+            continue  # no option: the run ends the machine's section (option 218)
         if modifier == "PLAN":
             raise NotYetSupported("MACHIN/...,PLAN (the GEPLAD planning pre-pass)")
         changes[28] = 0.0 if modifier == "LINEAR" else 1.0
@@ -178,11 +204,33 @@ def apply_machin_options(
     return changed, notes
 
 
+def _class_change_refused(machine: MachineDefinition, value: float) -> str | None:
+    """Why MACHIN may not set option 116 to ``value``, or None. The class is the machine's
+    structure: which rotary heads and tables move, with their registers and constants (options
+    100-105, 128), all set by the machine subroutine; option 116 is "required only for
+    multiaxis machines" (001 L25771-25777). So MACHIN may change one class for another on a
+    multiaxis machine, but not make a three-axis machine multiaxis, nor the reverse, nor give
+    a class to a five-axis machine described by data (its [kinematics] are its transform)."""
+    if machine.kinematics is not None and value != 0:
+        return (
+            f"OPTION 116 = {value:g} CANNOT BE SET BY MACHIN ON MACHINE {machine.label}: ITS "
+            "[kinematics] ARE ITS TRANSFORM; VALUE IGNORED"
+        )
+    if machine.kinematics is None and (machine.number_option(116) == 0) != (value == 0):
+        kind = "A THREE-AXIS MACHINE MULTIAXIS" if value != 0 else "A MULTIAXIS MACHINE THREE-AXIS"
+        return (
+            f"OPTION 116 = {value:g} (TRANSFORM CLASS) CANNOT MAKE {kind} "
+            f"(MACHINE {machine.label}); VALUE IGNORED"
+        )
+    return None
+
+
 __all__ = [
     "MachinRequest",
     "MachineFileInvalid",
     "apply_machin_options",
     "first_machin",
+    "is_machin_off",
     "parse_machin",
     "resolve_machine",
 ]

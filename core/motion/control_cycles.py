@@ -15,6 +15,11 @@ R = top + CLEAR - RAPTO, bottom = top - DEPTH. Without RETURN the tool goes back
 RETURN,0 sends it back to the level the cycle started from (G98). Other RETURN levels have
 no G code and stop the run. The DWELL goes in the option-57 register as for G04, the DEEP
 step in Q (REGSTR 21). Z and R are output again whenever a hole changes them.
+
+The cycles that dwell are the ones whose TABLEG function dwells: FACE (G82, and DRILL with
+a DWELL), BORE,DWELL (TABLEG 94, G89), BORE,DWELL,DRAG (93, LinuxCNC's G86 with P) and
+BORE,DWELL,MANUAL (95, LinuxCNC's G88 with P) (001 L22877-22977). OUT and IN, a quill's
+forward and back, have no G-code control counterpart.
 """
 
 from __future__ import annotations
@@ -30,6 +35,16 @@ from gecent.core.state import PostState
 
 PECK_REGISTER = 21  # Q
 R_REGISTER = 16
+
+
+def dwells(kind: str) -> bool:
+    """The control's cycle for ``kind`` dwells at the bottom, and its block takes P."""
+    return kind == "FACE" or kind.startswith("BORE,DWELL")
+
+
+def control_kind(cycle: Cycle) -> str:
+    """The control's cycle that drills ``cycle``: a DRILL with a DWELL is FACE's G82."""
+    return "FACE" if cycle.kind == "DRILL" and cycle.dwell else cycle.kind
 
 
 class ControlCycles:
@@ -58,9 +73,21 @@ class ControlCycles:
             raise NotYetSupported("CYCLE/DEEP's step without a Q register (REGFOR 21)", where)
         if machine.registers.formats[R_REGISTER] is None:
             raise NotYetSupported("a control cycle without an R register (REGFOR 16)", where)
-        if cycle.dwell and cycle.kind not in ("DRILL", "FACE"):
-            # G82 dwells; G83-G86 take no P (a bore with a dwell is G89, in no TABLEG cell)
+        if cycle.kind in ("OUT", "IN"):
+            raise NotYetSupported(f"CYCLE/{cycle.kind} by the control's cycle", where)
+        if cycle.dwell and not dwells(cycle.kind) and cycle.kind != "DRILL":
+            # G82 and the BORE,DWELL forms dwell; G81 and G83-G85 take no P
             raise NotYetSupported(f"CYCLE/{cycle.kind} with DWELL by the control's cycle", where)
+        cell = CYCLE_TYPES[control_kind(cycle)][1]
+        if machine.g_code(cell) is None:
+            # a control that bores (TABLEG 86) but whose file leaves out this form of it
+            words = cycle.kind.split(",")
+            with_ = " and ".join(words[1:]) or "DWELL"
+            raise NotYetSupported(
+                f"CYCLE/{words[0]} with {with_} by the control's cycle without its G code "
+                f"TABLEG({cell})",
+                where,
+            )
 
     def hole(
         self,
@@ -97,7 +124,7 @@ class ControlCycles:
         block.position = reached
         block.cells[3] = reached[0] * self.step
         block.cells[4] = reached[1] * self.step
-        kind = "FACE" if cycle.kind == "DRILL" and cycle.dwell else cycle.kind  # G82 dwells
+        kind = control_kind(cycle)
         cycle_g = machine.g_code(CYCLE_TYPES[kind][1])
         assert cycle_g is not None
         block.cells[2] = cycle_g
@@ -107,8 +134,8 @@ class ControlCycles:
             if cycle.kind == "DEEP":
                 # no STEP: one pass, and G83 still needs its Q (the whole depth)
                 block.cells[PECK_REGISTER] = cycle.step or cycle.depth
-            if cycle.kind == "FACE" or cycle.dwell:
-                # FACE is G82, which takes its P even when 0 (LinuxCNC refuses G82 without)
+            if dwells(kind):
+                # P even when 0: LinuxCNC refuses G82, G86, G88 and G89 without one
                 register = int(machine.number_option(57))
                 block.cells[register] = (cycle.dwell or 0.0) / (machine.number_option(56) or 1.0)
         self.words = words
@@ -131,6 +158,14 @@ class ControlCycles:
         plane = top + cycle.clearance - cycle.rapto
         back = plane if cycle.return_level is None else max(first_z + tz, plane)
         return plane, top - cycle.depth, back
+
+    def lathe_block(self, code: float, record: int) -> None:
+        """CYCLEL (001 L30038-30093): a lathe's cycle G code in a block by itself; the
+        points that follow are the control's."""
+        block = Block(Code.G_ONLY, record)
+        block.cells[2] = code
+        self.output(block)
+        self.active = True
 
     def off(self, record: int) -> None:
         """CYCLE/OFF: G80 (TABLEG(1)) when a cycle block went out."""

@@ -81,6 +81,7 @@ class FastLinear:
             and (not output.optimiser.multiplying or output.modern.direct_feed)
             and not output.slide_limits.limits
             and output.feed_limits is None  # (FEDLIM's per-axis limits, option 25 < 0)
+            and output.accel is None  # (A/D testing holds blocks, option 55 = 1)
             and not motion.variable_format
             and not words.long_formatters
             and words.zero_rule != -2

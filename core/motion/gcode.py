@@ -74,6 +74,7 @@ class RotaryCodes:
 
     def __init__(self, machine: MachineDefinition, maximum_units: float) -> None:
         self.limits = tuple(maximum_units / d for d in (1000.0, 100.0, 10.0))
+        self.maximum = maximum_units  # ROTMAX: SEGMNT keeps every block within it
         codes: list[DimensionCode | None] = []
         for location, gdimul in LINEAR_RANGES[:4]:
             value = machine.tableg[location]
@@ -87,15 +88,19 @@ class RotaryCodes:
         ROTMAX (option 111), or where the machine lacks TABLEG(11) the top of the largest
         range it has a code for (ROTMAX / 10 with TABLEG(2) ...): SEGMNT cuts turns to
         it, so a machine without the top code turns in more blocks rather than stopping
-        with fatal 138 (docs/decisions.md)."""
+        with fatal 39 (docs/decisions.md)."""
         tops = (*self.limits, maximum_units)
         present = [top for top, code in zip(tops, self.codes, strict=True) if code is not None]
         return max(present) if present else maximum_units
 
     def select(self, largest_units: float) -> DimensionCode:
+        if largest_units > self.maximum * (1 + 1e-9):  # SELGRO's error 39 (001 L37130)
+            raise FatalError(39, f"rotary departure {largest_units:g} exceeds option 111")
         code = _covering(self.codes, self.limits, largest_units)
         if code is None:
-            raise FatalError(138, f"no TABLEG code covers a rotary departure of {largest_units:g}")
+            # SELGRO's one fatal error is 39 (001 L37106-37144; 138 is SELG's, L36925-36971):
+            # a turn no code takes should have been segmented shorter
+            raise FatalError(39, f"no TABLEG code covers a rotary departure of {largest_units:g}")
         return code
 
     def needed(self, largest_units: float) -> int:
@@ -114,7 +119,7 @@ class RotaryCodes:
         """SELG, then SELGRO for a multiaxis move (001 L6052-6069, L6261-6282, W22): the
         linear code stays when its rotary range covers the largest rotary departure;
         otherwise SELGRO's own code, which is then the larger and covers the linear
-        departures too. Fatal 138 when the machine has no code for the rotary departure."""
+        departures too. Fatal 39 when the machine has no code for the rotary departure."""
         return code if self.covers(code, largest_units) else self.select(largest_units)
 
 
@@ -179,6 +184,8 @@ def circle_code(
     code = circular.select(radius, clockwise)
     if rotary.covers(code, turn):
         return code
+    if turn > rotary.maximum * (1 + 1e-9):  # SELGRO's error 39 (001 L37130)
+        raise FatalError(39, f"rotary departure {turn:g} exceeds option 111")
     bands = circular.codes[clockwise][rotary.needed(turn) : len(rotary.limits) + 1]
     found = next((c for c in bands if c is not None), None)
     if found is None:

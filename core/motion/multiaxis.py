@@ -2,7 +2,8 @@
 a CL point with its tool axis (x, y, z, i, j, k) goes through the machine's transform class
 (option 116, GEOM5 -> CLASSn, plugins/classes) to the machine's linear and rotary axes.
 
-* FROM5: a tool axis whose length is not 1 is warned about and taken as its unit vector;
+* FROM5: a FROM's tool axis whose length is not 1 is fatal error 19; a later point's is
+  warned about and taken as its unit vector;
 * the linear axes are rounded to whole steps; each rotary axis turns from its last angle
   to the class's new one the shorter way round (the manual's W5 turns B from 0 to -25 by
   -25, 001 L4243-4255), its departure rounded to option 119's step in the output units of
@@ -26,7 +27,7 @@ from math import acos, ceil, degrees, isfinite, radians, sqrt
 
 import numpy as np
 from gecent.core.cl.records import Motion, MotionSubtype
-from gecent.core.errors import Diagnostic, InputError, NotYetSupported, SourcePosition
+from gecent.core.errors import Diagnostic, FatalError, InputError, NotYetSupported, SourcePosition
 from gecent.core.machine.definition import ROTARY_CELLS
 from gecent.core.motion.gcode import RotaryCodes
 from gecent.core.motion.guard import check_segments
@@ -44,6 +45,20 @@ UNIT_TOLERANCE = 1e-4  # FROM5: a tool axis this close to length 1 is a unit vec
 NOT_UNIT = "TOOL AXIS DIRECTION COSINES ARE NOT A UNIT VECTOR; THEY ARE NORMALIZED"
 
 PartPoint = tuple[float, float, float, float, float, float]
+
+# R, the rotary head's axis to the spindle face, by (head, large gripper) (001 L25639-25665)
+GRIPPER_OPTIONS = {(1, False): 104, (1, True): 105, (2, False): 102, (2, True): 103}
+
+
+def gripper_key(state: PostState) -> tuple[int, bool, float | None]:
+    """What R + TL depends on: the head (TLHEAD), the gripper (GRPLOD), the length."""
+    return (2 if state.head == 2 else 1, state.tool.large_gripper, state.tool.length)
+
+
+def gripper_reach(state: PostState) -> float:
+    """R + TL (001 L12735-12741): R of the head and gripper, plus the tool's length."""
+    head, large, length = gripper_key(state)
+    return state.machine.number_option(GRIPPER_OPTIONS[head, large]) + (length or 0.0)
 
 
 class MultiaxisMotion:
@@ -63,11 +78,12 @@ class MultiaxisMotion:
         self.warn = warn
         self.step = machine.number_option(14)
         self.depmax = round(machine.number_option(4) / self.step)
-        # R + TL: head 1's small gripper (option 104) until LOAD names another and LOADTL a
-        # tool length (docs/decisions.md)
+        # R + TL: R by the head and the gripper LOAD chose (head 1's small one, option 104,
+        # before any LOAD), TL the tool's length (LOAD or LOADTL LENGTH; 0 when not given)
         options = tuple(machine.number_option(n) for n in range(100, 106))
+        self._constants_for = gripper_key(state)
         self.kinematics = Kinematics(
-            reach=machine.number_option(104),
+            reach=gripper_reach(state),
             options=(options[0], options[1], options[2], options[3], options[4], options[5]),
         )
         self.per_degree = UNITS_PER_DEGREE.get(machine.number_option(118), 1.0)
@@ -137,6 +153,8 @@ class MultiaxisMotion:
                     f"the tool axis {i:g}, {j:g}, {k:g} is too large to normalise", record.where
                 )
             if abs(length - 1.0) > UNIT_TOLERANCE:
+                if record.subtype is MotionSubtype.FROM:  # FROM5's error 19 (001 L31455)
+                    raise FatalError(19, f"|i, j, k| = {length:.6g}", record.where)
                 self.warn(Diagnostic(NOT_UNIT, record.where))
             self.tool_axis = (i / length, j / length, k / length)
         tx, ty, tz = self.state.position.translation
@@ -148,6 +166,8 @@ class MultiaxisMotion:
         positions in rotary steps, and whether the point is singular."""
         if self.chain is not None and self.chain.needs_tool_length:
             self._tool_length()
+        elif self.chain is None and gripper_key(self.state) != self._constants_for:
+            self.load_constants()
         try:
             result = self.transform.direct(
                 np.array([part]), self.kinematics, previous=self.machine_previous
@@ -271,6 +291,16 @@ class MultiaxisMotion:
             )
         if length != self.kinematics.reach:
             self.kinematics = Kinematics(reach=length, options=self.kinematics.options)
+            self.linearity = LinearityTest(self.transform, self.kinematics)
+
+    def load_constants(self) -> None:
+        """CLASS with MAFORK = 0 (LOAD, 001 L33878-33925; CLASS1 L12749-12870): the loaded
+        tool's R + TL, for the manual's classes (a five-axis chain takes its reach in
+        ``_tool_length``)."""
+        self._constants_for = gripper_key(self.state)
+        reach = gripper_reach(self.state)
+        if self.chain is None and reach != self.kinematics.reach:
+            self.kinematics = Kinematics(reach=reach, options=self.kinematics.options)
             self.linearity = LinearityTest(self.transform, self.kinematics)
 
     def _move(self, record: Motion, part: PartPoint) -> None:

@@ -4,7 +4,8 @@ control's own canned cycles, CYCLGP (manual §2.4.1, 001 L1043-1178; flow chart 
 
 Everything a positioning machine outputs is absolute:
 
-* each CL point plus TRANS (Z first moved by option 140) is rounded to whole steps and
+* each CL point plus TRANS (Z first moved by option 140, and by the tool length under
+  option 86 < 0) is rounded to whole steps and
   output as a position, not a departure;
 * CODE +16 carries X and Y; Z follows option 130: 0 ignored, +1 a CODE -16 block of its own
   after the XY block, -1 in the XY block; a coordinate that did not change is not output,
@@ -57,8 +58,8 @@ class PositioningMotion:
         self.z_mode = machine.number_option(130)
         self.suppress_repeats = machine.number_option(40) == 1
         self.inversion = machine.number_option(140)  # 0: no adjustment
-        if machine.number_option(86) < 0:
-            raise NotYetSupported("tool-length adjustment of positioning Z (option 86 < 0)")
+        # option 86 < 0: POSMOV adjusts Z by the tool length TOOLEN (001 L34956-34961)
+        self.length_adjusted = machine.number_option(86) < 0
         cycle_off = machine.g_code(1)
         self.cycle_off: float | Absent = ABSENT if cycle_off is None else float(cycle_off)
         self.has_r_register = machine.registers.formats[16] is not None
@@ -92,11 +93,18 @@ class PositioningMotion:
     def _machine_point(self, point: tuple[float, ...]) -> tuple[list[float], list[int]]:
         tx, ty, tz = self.state.position.translation
         part = [point[X] + tx, point[Y] + ty, point[Z] + tz]
-        if self.inversion:
-            part[Z] -= self.inversion  # "DATACL = DATACL - OPTAB(140)" (001 L19870-19876)
-            if part[Z] < 0:
+        z_shift = self._z_shift()
+        if z_shift:
+            part[Z] += z_shift  # "DATACL = DATACL - OPTAB(140)" (001 L19870-19876)
+            if self.inversion and part[Z] < 0:
                 self.warn(Diagnostic(NEGATIVE_Z, None))
         return part, [to_steps(value, self.step) for value in part]
+
+    def _z_shift(self) -> float:
+        """Z's adjustment: less option 140's inversion; with option 86 < 0 plus the tool
+        length, the spindle nose standing that far above the tip (001 L25406-25434)."""
+        length = self.state.tool.length if self.length_adjusted else None
+        return -self.inversion + (length or 0.0)
 
     def _from(self, record: Motion) -> None:
         position = self.state.position
@@ -186,7 +194,7 @@ class PositioningMotion:
         distance changes, then the XY position that runs it. The tool stays at its height."""
         height = self.state.position.previous_part[Z]
         tz = self.state.position.translation[Z]
-        top = point[Z] + tz - self.inversion
+        top = point[Z] + tz + self._z_shift()
         rapid_level = top + cycle.clearance - cycle.rapto
         bottom = top - cycle.depth
         plunge = to_steps(height - bottom, self.step) * self.step
@@ -203,7 +211,7 @@ class PositioningMotion:
             self.state.feed.rapid_requested = True
             tx, ty, tz = self.state.position.translation
             at = self.state.position.previous_part
-            lowered = (at[X] - tx, at[Y] - ty, at[Z] - rapid_distance - tz + self.inversion)
+            lowered = (at[X] - tx, at[Y] - ty, at[Z] - rapid_distance - tz - self._z_shift())
             part, steps = self._machine_point(lowered)
             previous = self.state.position.previous
             self._rapid_test([steps[a] - previous[a] for a in range(3)])
@@ -222,7 +230,7 @@ class PositioningMotion:
             block.steps = (0, 0, 0)
             self.emit(block)
         tz = self.state.position.translation[Z]
-        self._move(record, (point[X], point[Y], height - tz + self.inversion), g_code, hole=True)
+        self._move(record, (point[X], point[Y], height - tz - self._z_shift()), g_code, hole=True)
 
     def _cycle_g(self, cycle: Cycle, record: Motion) -> float:
         cell = CYCLE_TYPES[cycle.kind][1]

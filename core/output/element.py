@@ -14,6 +14,7 @@ from math import asin, hypot, pi, radians
 
 from gecent.core.absent import ABSENT, Absent
 from gecent.core.errors import Diagnostic, InputError, SourcePosition
+from gecent.core.feed.accel import AccelerationTest, acceleration_test
 from gecent.core.feed.contour import FeedCommand, RapidCommand
 from gecent.core.feed.limits import FeedLimits
 from gecent.core.feed.optimise import FeedOptimiser
@@ -66,6 +67,9 @@ PLACED_CODES = MOTION_CODES | THREAD_CODES
 UNSHUFFLED = frozenset({Code.DWELL})
 # numeric blocks that get TABLEG(5) when they have no G and option 38 = +-1 (001 L24890-24907)
 G_FILLED = frozenset({Code.NONMOTION, Code.AUX_ONLY, Code.END, Code.DWELL})
+# POSFED's range test (001 L11214-11216): gecent's wording, the manual gives none
+COMMAND_ABOVE = "FEEDRATE COMMAND {:g} ABOVE THE MAXIMUM (OPTION 24); {:g} USED"
+COMMAND_BELOW = "FEEDRATE COMMAND {:g} BELOW THE MINIMUM (OPTION 49); {:g} USED"
 # comment 22 (001 L29355-29358): a TABLEM code the machine does not have
 NOT_AVAILABLE = "REQUESTED MISCELLANEOUS FUNCTION CODE IS NOT AVAILABLE ON THIS MACHINE"
 # non-motion blocks that may carry an option-98 F or an option-148 dwell (001 L9204-9258)
@@ -103,7 +107,7 @@ class OutputElement(ModernProgram):
         # SEQLIM: the largest N the format holds (999 for format 30)
         self.sequence_limit = 10**n_format.left - 1 if n_format is not None else 1 << 62
         # where finished blocks go (core/output/sinks.py); the run sets it
-        self.emit: Callable[[Block], None] = _nowhere
+        self.sink: Callable[[Block], None] = _nowhere
         # a register macro's place (core/macros): each block's words pass through it
         self.register_hook: Callable[[Block, list[Word]], list[Word]] | None = None
         self.diagnostics: list[Diagnostic] = []
@@ -147,6 +151,9 @@ class OutputElement(ModernProgram):
         # pass 1 of a multihead run (manual §3.4.8.1): OUTPUT finishes the block and dumps
         # it; the GEOUT conversion waits for the merge pass (core/multihead)
         self.dump_only = state.head != 0
+        # option 55 = 1: A/D testing holds each feed block for the corner after it
+        self.accel_ipm: float | None = None
+        self.accel: AccelerationTest | None = None if self.dump_only else acceleration_test(self)
 
     # -- OUTPUT (flow chart 8) ------------------------------------------------------------
 
@@ -232,6 +239,9 @@ class OutputElement(ModernProgram):
         state.pending.rpm = None
         state.pending.spindle = ABSENT
         state.pending.m_code = ABSENT
+        if self.accel is not None:
+            self.accel.take(block)  # A/D (option 55): numbered when it lets the block go
+            return
         # numbered last: a block the move needs first (G95, a plane) takes the N before it
         block.cells[1] = self._sequence_number(block)
         self._emit(block)
@@ -356,6 +366,20 @@ class OutputElement(ModernProgram):
         part): the multihead merge pass finishes the pieces of a split move with it."""
         self._motion(block)
 
+    @property
+    def emit(self) -> Callable[[Block], None]:
+        """Where a finished block goes; under A/D, after the block it holds."""
+        return self.sink if self.accel is None else self.accel.passing
+
+    @emit.setter
+    def emit(self, sink: Callable[[Block], None]) -> None:
+        self.sink = sink
+
+    def number_and_emit(self, block: Block) -> None:
+        """N, then GEOUT: the end of OUTPUT for a block A/D lets go."""
+        block.cells[1] = self._sequence_number(block)
+        self._emit(block)
+
     def _motion(self, block: Block) -> None:
         assert block.steps is not None
         if block.code in CIRCLE_CODES:
@@ -379,7 +403,7 @@ class OutputElement(ModernProgram):
             # L10985-11038), given with the block
             length = block.feed_length or sum((s * self.step) ** 2 for s in block.steps) ** 0.5
         block.cells[2] = float(code.code)
-        if self.slide_limits.limits:
+        if self.slide_limits.limits and self.accel_ipm is None:  # (A/D: tested whole)
             assert block.position is not None
             self.diagnostics.extend(self.slide_limits.test(block.position))
         feed = self.state.feed
@@ -398,7 +422,7 @@ class OutputElement(ModernProgram):
             self.cut_minutes += block.cut_minutes
             return
         self._check_feed()
-        wanted = feed.ipm
+        wanted = feed.ipm if self.accel_ipm is None else self.accel_ipm
         if self.feed_limits is not None:
             # SELG and SELGCR both call FEDLIM (001 L1425-1436): an arc's axis feeds are
             # taken from its chord over its length, their mean along the arc
@@ -484,11 +508,28 @@ class OutputElement(ModernProgram):
             )
             command = self.positioning_feed.command(self.state.machine, feed.ipm, context)
             self.diagnostics.extend(Diagnostic(text) for text in command.comments)
-            block.cells[11] = command.command
-            ipm = command.ipm
+            block.cells[11], ipm = self._position_command_limits(command.command, command.ipm)
         block.cells[19] = ipm
         block.cut_minutes = length / ipm if ipm > 0 else 0.0
         self.cut_minutes += block.cut_minutes
+
+    def _position_command_limits(
+        self, command: float | Absent, ipm: float
+    ) -> tuple[float | Absent, float]:
+        """POSFED's only test (001 L11214-11216, spec 05 §4): the feed command within its
+        range extremes, options 49 and 24; the feed made then follows the command (a
+        command is proportional to its feed in every positioning type)."""
+        if command is ABSENT or not isinstance(command, float | int) or command <= 0:
+            return command, ipm
+        machine = self.state.machine
+        highest, lowest = machine.number_option(24), machine.number_option(49)
+        if highest > 0 and command > highest:
+            self.diagnostics.append(Diagnostic(COMMAND_ABOVE.format(command, highest)))
+            return highest, ipm * highest / command
+        if lowest > 0 and command < lowest:
+            self.diagnostics.append(Diagnostic(COMMAND_BELOW.format(command, lowest)))
+            return lowest, ipm * lowest / command
+        return command, ipm
 
     def _thread(self, block: Block) -> None:
         """A thread block comes finished from THREDO: no CONTUR, the lead and G are set;

@@ -17,18 +17,22 @@ Handler = Callable[["Post", Statement], None]
 
 
 def handlers() -> dict[str, Handler]:
+    from gecent.core.feed import accel
     from gecent.core.statements import (
         auxiliary,
+        control,
         coordinates,
         cutcom,
         cycle,
         delay,
         feed,
+        handling,
         linearity,
         machine,
         multihead,
         select,
         spindle_tool,
+        surfaces,
         tape,
         text,
         threading,
@@ -50,6 +54,10 @@ def handlers() -> dict[str, Handler]:
         select,
         multihead,
         linearity,
+        handling,
+        surfaces,
+        control,
+        accel,
     )
     for module in modules:
         table.update(module.HANDLERS)

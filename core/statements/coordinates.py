@@ -46,12 +46,15 @@ def seqno(run: Post, statement: Statement) -> None:
 
 def trans(run: Post, statement: Statement) -> None:
     """TRANS/x,y,z: replaces the translation added to every later CL point (L38816-38819);
-    an incremental machine's next departure carries the change."""
+    an incremental machine's next departure carries the change. On a positioning machine
+    the tool-length term of option 86 is kept in z (core/tool.py)."""
     numbers = statement.numbers()
     if len(numbers) != len(statement.args) or not 1 <= len(numbers) <= 3:
         raise InputError("TRANS expects up to three distances x, y, z", statement.where)
     x, y, z = (*(run.units.length(v) for v in numbers), 0.0, 0.0)[:3]
-    run.state.position.translation = (x, y, z)
+    # option 86 = 1 or 2: the tool length stays in z (TOOLEN "may be figured into z",
+    # L38833-38835), as TOOLGP put it there
+    run.state.position.translation = (x, y, z + run.tool.length_term)
 
 
 def origin(run: Post, statement: Statement) -> None:

@@ -1,62 +1,81 @@
-"""CYCLE and CYCLE/OFF. On a contouring machine the cycle is remembered and every later CL
-point is drilled by the expansion of core/motion/cycles.py (docs/research/cycles.md); a
-contouring machine whose control has the cycle's own G code (TABLEG 82-88) would take the
-control-cycle path, which is not built for contouring controls yet. On a positioning
-machine (option 1 = 1, 2) the control runs the cycle: core/motion/positioning.py (CYCLGP);
-on a modern contouring control with absolute dimensions (gecent option 251 = 1) too:
-core/motion/control_cycles.py (G81-G85)."""
+"""CYCLE, CYCLE/OFF and CYCLE/INHIBT. On a contouring machine the cycle is remembered and
+every later CL point is drilled by the expansion of core/motion/cycles.py
+(docs/research/cycles.md), along the machine's spindle axis. On a positioning machine
+(option 1 = 1, 2) the control runs the cycle: core/motion/positioning.py (CYCLGP); on a
+modern contouring control with absolute dimensions (gecent option 251 = 1) too:
+core/motion/control_cycles.py (G81-G89). On a lathe (option 132 = 0) whose control has the
+cycle's G code, CYCLEL puts that G code in a block by itself and the points that follow are
+ordinary moves for the control's cycle (001 L30038-30093)."""
 
 from __future__ import annotations
 
+from dataclasses import replace
 from typing import TYPE_CHECKING
 
 from gecent.core.cl.records import Statement
-from gecent.core.errors import Diagnostic, NotYetSupported
-from gecent.core.motion.cycles import CYCLE_TYPES, in_machine_units, parse_cycle
+from gecent.core.errors import Diagnostic, InputError, NotYetSupported
+from gecent.core.motion.cycles import (
+    CYCLE_TYPES,
+    PROGRAM_STOP,
+    SPINDLE_OFF,
+    Cycle,
+    in_machine_units,
+    parse_cycle,
+    spindle_axis,
+)
 from gecent.core.statements.feed import program_feed
 
 # the control's own cycle block holds G, Z and R only (CYCLGP, 001 L30164-30178)
 CONTROL_CYCLE_KEEPS = "CYCLE {} NOT OUTPUT: THE CONTROL'S OWN CYCLE DOES IT"
+# CYCLEL's block holds the G code alone (001 L30049-30056)
+LATHE_CYCLE_KEEPS = "CYCLE {} NOT OUTPUT: THE LATHE'S CYCLE G CODE GOES OUT BY ITSELF"
+NO_DWELL_TIME = "CYCLE/{} NAMES NO DWELL TIME: IT DWELLS 0 SECONDS"
+LATHE = 0  # option 132, the machine type
 
 if TYPE_CHECKING:
     from gecent.core.dispatch.context import Post
 
 
 def cycle(run: Post, statement: Statement) -> None:
-    parsed = parse_cycle(statement, run.warn)
+    machine = run.machine
+    positioning = machine.number_option(1) != 0
+    lathe = not positioning and machine.number_option(132) == LATHE
+    parsed = parse_cycle(statement, run.warn, needs_depth=not lathe)
     feed = run.state.feed
     if feed.rapid_mode:
         run.rapid.leave()  # RAPIDX: a cycle ends rapid traverse (001 L30195-30197)
     feed.rapid_requested = False
-    machine = run.machine
-    positioning = machine.number_option(1) != 0
     if positioning:
         run.output.milling = parsed is not None and parsed.kind == "MILL"
     if parsed is None:
+        if lathe:
+            run.control_cycle_element().off(statement.number)  # the lathe's cycle G ends
         run.cycle = None
         if run.control_cycles is not None:
             run.control_cycles.off(statement.number)
             run.control_cycles = None
         return
     cell = CYCLE_TYPES[parsed.kind][1]
+    if lathe and machine.g_code(cell) is not None:
+        _lathe_block(run, parsed, statement, float(machine.g_code(cell) or 0))
+        return
+    if lathe:
+        run.control_cycle_element().off(statement.number)
+    if not parsed.depth and parsed.kind != "IN":
+        raise InputError(f"CYCLE/{parsed.kind} needs a depth", statement.where)
+    if positioning and parsed.kind == "IN":
+        # CYCLGP's block is a plunge and a rapid distance; a withdrawal has neither
+        raise NotYetSupported("CYCLE/IN on a positioning machine", statement.where)
     if positioning and machine.g_code(cell) is None:
         raise NotYetSupported(
             f"CYCLE/{parsed.kind} on a positioning machine without its G code TABLEG({cell})",
             statement.where,
         )
     if positioning:
-        unsent = [
-            name
-            for name, given in (
-                ("STEP", parsed.step is not None),
-                ("DWELL", parsed.dwell > 0),
-                ("RETURN", parsed.return_level is not None),
-            )
-            if given
-        ]
-        if unsent:
-            run.warn(Diagnostic(CONTROL_CYCLE_KEEPS.format(", ".join(unsent)), statement.where))
-    control = not positioning and machine.g_code(cell) is not None
+        _unsent(run, parsed, statement, CONTROL_CYCLE_KEEPS)
+    # a control that bores also makes BORE's forms: control_cycles names a missing cell
+    bore_form = parsed.kind.startswith("BORE,") and machine.g_code(CYCLE_TYPES["BORE"][1])
+    control = not positioning and (machine.g_code(cell) is not None or bool(bore_form))
     if control and machine.number_option(251) != 1:
         raise NotYetSupported(
             f"CYCLE/{parsed.kind} by the control's own cycle (TABLEG({cell})) with "
@@ -66,6 +85,8 @@ def cycle(run: Post, statement: Statement) -> None:
     units = run.units
     run.cycle = in_machine_units(parsed, units.length)
     run.cycle_first_z = None
+    if not positioning and not control:
+        run.cycle = _expanded(run, run.cycle, statement)
     if control:
         element = run.control_cycle_element()
         element.check(run.cycle, statement.where)
@@ -73,9 +94,65 @@ def cycle(run: Post, statement: Statement) -> None:
     elif run.control_cycles is not None:  # a cycle the control lacks follows one it has
         run.control_cycles.off(statement.number)
         run.control_cycles = None
+    if not positioning and "DWELL" in parsed.kind and not parsed.dwell:
+        run.warn(Diagnostic(NO_DWELL_TIME.format(parsed.kind), statement.where))
+    _program_cycle_feed(run, parsed, statement)
+
+
+def _expanded(run: Post, cycle: Cycle, statement: Statement) -> Cycle:
+    """The cycle gecent makes by moves: along the spindle axis, with the machine's spindle
+    stop (and program stop) for DRAG and MANUAL."""
+    machine = run.machine
+    axis = spindle_axis(machine)
+    if axis is None:
+        raise NotYetSupported("a canned cycle on a machine with no Z axis (option 59)")
+    way_out = cycle.kind.rsplit(",", 1)[-1]
+    needed = {"DRAG": (SPINDLE_OFF,), "MANUAL": (SPINDLE_OFF, PROGRAM_STOP)}.get(way_out, ())
+    for cell in needed:
+        if machine.m_code(cell) is None:
+            raise NotYetSupported(
+                f"CYCLE/{cycle.kind} on a machine without TABLEM({cell})", statement.where
+            )
+    restart = 5 if run.state.spindle.direction < 0 else 4  # the spindle turns as it did
+    if axis != 2:
+        # the level the cycle starts from, along the spindle axis (Post takes CL z itself)
+        position = run.state.position
+        run.cycle_first_z = position.previous_part[axis] - position.translation[axis]
+    return replace(cycle, axis=axis, restart_cell=restart)
+
+
+def _lathe_block(run: Post, parsed: Cycle, statement: Statement, code: float) -> None:
+    """CYCLEL: the G code in a block by itself; the later points are plain moves."""
+    if run.control_cycles is not None:
+        run.control_cycles.off(statement.number)
+        run.control_cycles = None
+    run.cycle = None
+    _unsent(run, parsed, statement, LATHE_CYCLE_KEEPS)
+    run.control_cycle_element().lathe_block(code, statement.number)
+    _program_cycle_feed(run, parsed, statement)
+
+
+def _unsent(run: Post, parsed: Cycle, statement: Statement, text: str) -> None:
+    """A warning naming what the control's block does not carry."""
+    unsent = [
+        name
+        for name, given in (
+            ("DEPTH", text is LATHE_CYCLE_KEEPS and parsed.depth > 0),
+            ("CLEAR", text is LATHE_CYCLE_KEEPS and parsed.clearance > 0),
+            ("STEP", parsed.step is not None),
+            ("DWELL", parsed.dwell > 0),
+            ("RETURN", parsed.return_level is not None),
+        )
+        if given
+    ]
+    if unsent:
+        run.warn(Diagnostic(text.format(", ".join(unsent)), statement.where))
+
+
+def _program_cycle_feed(run: Post, parsed: Cycle, statement: Statement) -> None:
     if parsed.feed is not None:
         value, unit = parsed.feed
-        program_feed(run, units.per_minute(value, unit), unit, statement)
+        program_feed(run, run.units.per_minute(value, unit), unit, statement)
 
 
 HANDLERS = {"CYCLE": cycle}

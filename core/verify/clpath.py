@@ -30,7 +30,14 @@ from gecent.core.cl.records import (
 from gecent.core.errors import Diagnostic, InputError, SourcePosition
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.machine.shuffle import cell_map
-from gecent.core.motion.cycles import Cycle, cycle_legs, in_machine_units, parse_cycle
+from gecent.core.motion.cycles import (
+    Cycle,
+    cycle_cell,
+    cycle_legs,
+    in_machine_units,
+    parse_cycle,
+    spindle_axis,
+)
 from gecent.core.motion.linear import TWO_AXIS
 from gecent.core.motion.tool_axis import three_axis_motion
 from gecent.core.output.modern import CL_PLANES
@@ -204,8 +211,14 @@ class _Reader:
             x, y, z = (*numbers, 0.0, 0.0, 0.0)[:3]
             self.translation = (x, y, z)
         elif major == "CYCLE":
-            parsed = parse_cycle(statement, lambda note: None)
+            lathe = self.machine.number_option(132) == 0 and self.machine.number_option(1) == 0
+            parsed = parse_cycle(statement, lambda note: None, needs_depth=not lathe)
             self.cycle = None if parsed is None else in_machine_units(parsed, self.units.length)
+            if self.cycle is not None and lathe and self.machine.g_code(cycle_cell(self.cycle)):
+                self.cycle = None  # CYCLEL: the lathe's control runs the points as moves
+            axis = spindle_axis(self.machine)
+            if self.cycle is not None and axis is not None:
+                self.cycle = replace(self.cycle, axis=axis)  # drilled as the post drills
             self.cycle_first_z = None
             if parsed is not None and parsed.feed is not None:
                 self._program_feed(*parsed.feed)
@@ -289,7 +302,7 @@ class _Reader:
         self.rapid_once = False
         for hole in points:
             if self.cycle_first_z is None:
-                self.cycle_first_z = self.at[2]
+                self.cycle_first_z = self.at[self.cycle.axis]
             legs = cycle_legs(self.cycle, self.at, hole, self.cycle_first_z, self.control_pecks)
             if legs and legs[0].point[2] == self.at[2] and legs[0].point[:2] != self.at[:2]:
                 legs = legs[1:]  # positioning at the present height: the control's own way

@@ -15,7 +15,7 @@ from dataclasses import dataclass
 from gecent.core.absent import ABSENT
 from gecent.core.errors import NotYetSupported
 from gecent.core.hookspecs import Register, hookimpl
-from gecent.core.listing import environment
+from gecent.core.listing import environment, is_page_slew
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.machine.shuffle import cell_map
 from gecent.core.output.block import TEXT_CODES, Block, Code
@@ -23,11 +23,15 @@ from gecent.core.output.sinks import PrintoutUnfit
 from gecent.core.output.tape import tape_line
 from gecent.plugins.printouts.layout import (
     PRINTABLE,
+    ROTARY_CELLS,
     Column,
     Pages,
+    RotaryReading,
     Tally,
-    absolute_text,
+    absolute_digits,
+    absolute_width,
     centred_heading,
+    expanded_text,
     feed_text,
     format_width,
     lines_per_page,
@@ -60,11 +64,13 @@ def columns(machine: MachineDefinition) -> list[Column]:
         if registers.formats[k] is not None
     ]
     prefix = "OPR" if machine.number_option(172) == 1 else "ABS"
+    digits = absolute_digits(machine)
     for location, letter in ABSOLUTE_AXES:
-        fmt = registers.formats[location]
-        if fmt is not None:
-            # the absolute columns are widened to 4 integer digits (001 L8936-8965)
-            wanted.append(Column(f"ABS-{location}", f"{prefix}-{letter}", 2 + 4 + fmt.right))
+        if registers.formats[location] is not None:
+            # the absolute columns are widened to 4 integer digits, 5 when metric (001
+            # L8936-8965)
+            width = absolute_width(registers, location, digits)
+            wanted.append(Column(f"ABS-{location}", f"{prefix}-{letter}", width))
     wanted.append(Column("F-IPM", "F-MPM" if machine.number_option(138) == 1 else "F-IPM", 9))
     wanted.append(Column("S-RPM", "S-RPM", 7))
     if machine.number_option(143) != 0:
@@ -111,10 +117,17 @@ class Geout1:
 class LineMaker:
     """One block's line, with the layout's columns worked out once: the incremental
     registers as printed, the absolute (or, option 172 = 1, operator: less the ORIGIN,
-    001 L9128-9134) axes, F-IPM, S-RPM and the CL record number."""
+    001 L9128-9134) axes, F-IPM, S-RPM and the CL record number. The absolute values are
+    printed in their widened format with leading zeros (W9, 001 L8945-8960) on a block that
+    moves: the linear axes at the point reached (the last one on a rotary block), the
+    rotary axes A and B at their scale readings in degrees (:meth:`follow` sees every
+    block)."""
 
     def __init__(self, machine: MachineDefinition, layout: list[Column]) -> None:
         self.step = machine.number_option(14)
+        self.digits = absolute_digits(machine)
+        self.point: tuple[int, ...] | None = None  # the machine point (steps), once known
+        self.rotary = RotaryReading(machine)
         self.operator = 1.0 if machine.number_option(172) == 1 else 0.0
         shuffle = cell_map(machine.number_option(59), "XYZ")
         self.columns: list[tuple[int, int, int, tuple[tuple[int, int], ...], int]] = []
@@ -143,13 +156,19 @@ class LineMaker:
             cell: end for kind, end, cell, _, _ in self.columns if kind == REGISTER
         }
         self.trailing = [
-            (kind, end, axes, decimals)
-            for kind, end, _, axes, decimals in self.columns
+            (kind, end, cell, axes, decimals)
+            for kind, end, cell, axes, decimals in self.columns
             if kind != REGISTER
         ]
         registers = [i for i, (kind, *_) in enumerate(self.columns) if kind == REGISTER]
         # words are laid out in their own order: the register columns must come first
         assert registers == list(range(len(registers)))
+
+    def follow(self, block: Block) -> None:
+        """The point a block reaches and the rotary axes' turns (every block, in order)."""
+        if block.position is not None:
+            self.point = block.position
+        self.rotary.follow(block)
 
     def line(self, block: Block, origin: tuple[float, float, float] = (0.0, 0.0, 0.0)) -> str:
         code = block.code
@@ -157,7 +176,10 @@ class LineMaker:
             return block.text or ""
         if code not in PRINTABLE:
             raise NotYetSupported(f"GEOUT1 line for a CODE {int(code)} block")
-        position = block.position
+        moves = block.position is not None or block.rotary is not None
+        position = block.position if block.position is not None else self.point
+        degrees = self.rotary.degrees
+        digits = self.digits
         cells = block.cells
         step = self.step
         operator = self.operator
@@ -169,13 +191,19 @@ class LineMaker:
                 end = ends.get(location)
                 if end is not None:
                     line = line.ljust(end - len(text)) + text
-        for kind, end, axes, decimals in self.trailing:
+        for kind, end, cell, axes, decimals in self.trailing:
             if kind == ABSOLUTE:
+                if not moves:
+                    continue
+                if cell in ROTARY_CELLS:
+                    text = expanded_text(degrees[cell], decimals, digits)
+                    line = line.ljust(end - len(text)) + text
+                    continue
                 if position is None:
                     continue
                 for internal, sign in axes:
                     at = position[internal] * step - operator * origin[internal]
-                    text = absolute_text(sign * at, decimals)
+                    text = expanded_text(sign * at, decimals, digits)
                     line = line.ljust(end - len(text)) + text
             elif kind == FEED:
                 if cells[19] is not ABSENT:
@@ -209,7 +237,8 @@ class Geout1Pages:
     ) -> None:
         self.printout = printout
         self.layout = columns(machine)
-        self.line = LineMaker(machine, self.layout).line
+        self.lines = LineMaker(machine, self.layout)
+        self.line = self.lines.line
         self.tally = tally = Tally(machine)
         title = machine_title(machine)
         titles = centred_heading(self.layout)
@@ -229,6 +258,9 @@ class Geout1Pages:
             single_head(block, "GEOUT1")
         tally = self.tally
         tally.count(block, line)
+        self.lines.follow(block)
+        if is_page_slew(block):
+            return self.pages.slew()
         if not block.printed:
             return ""
         return self.pages.add_line(self.line(block, tally.origin), tally.cut, tally.dwell)

@@ -17,7 +17,7 @@ from dataclasses import dataclass
 
 from gecent.core.absent import ABSENT
 from gecent.core.hookspecs import Register, hookimpl
-from gecent.core.listing import environment
+from gecent.core.listing import environment, is_page_slew
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.output.block import TEXT_CODES, Block, Code
 from gecent.core.output.element import MOTION_CODES, POSITION_CODES, THREAD_CODES
@@ -37,7 +37,10 @@ PAGE_TEMPLATE = "geout2_page.j2"
 TAG_WIDTH = 3  # INC, ABS, OPR
 # the records printed on three lines (a FROM states the point the summing starts from)
 MOTION_RECORDS = (
-    MOTION_CODES | POSITION_CODES | THREAD_CODES | {Code.ROTARY_INCREMENTAL, Code.CYCLE, Code.FROM}
+    MOTION_CODES
+    | POSITION_CODES
+    | THREAD_CODES
+    | {Code.ROTARY_INCREMENTAL, Code.ROTARY_ABSOLUTE, Code.CYCLE, Code.FROM}
 )
 
 
@@ -90,6 +93,8 @@ class Geout2Pages:
         tally.count(block, line)
         data = self.data
         data.follow(block)
+        if is_page_slew(block):
+            return self.pages.slew()
         if not block.printed:
             return ""
         code = block.code

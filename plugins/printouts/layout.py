@@ -13,9 +13,11 @@ from dataclasses import dataclass
 from math import ceil
 from typing import TYPE_CHECKING, Any
 
+from gecent.core.absent import ABSENT
 from gecent.core.errors import FatalError, InputError, SourcePosition
 from gecent.core.machine.definition import MachineDefinition, RegisterSet
 from gecent.core.machine.shuffle import cell_map
+from gecent.core.motion.rotary import UNITS_PER_DEGREE, normalise
 from gecent.core.output.block import Block, Code
 from gecent.core.output.element import MOTION_CODES, POSITION_CODES, THREAD_CODES
 from gecent.core.output.format import NO_DECIMAL_POINT
@@ -47,6 +49,7 @@ PRINTABLE = (
     | {
         Code.FROM,
         Code.ROTARY_INCREMENTAL,
+        Code.ROTARY_ABSOLUTE,
         Code.NONMOTION,
         Code.AUX_ONLY,
         Code.DWELL,
@@ -124,11 +127,6 @@ def centred_heading(columns: Sequence[Column]) -> str:
     return line.rstrip()
 
 
-def absolute_text(value: float, decimals: int) -> str:
-    """GEOUT1's absolute value: signed, no leading zeros."""
-    return f"{round(value, decimals) + 0.0:+.{decimals}f}"  # + 0.0: no "-0.0000"
-
-
 def expanded_text(value: float, decimals: int, digits: int = ABSOLUTE_DIGITS) -> str:
     """An absolute value in its widened format, its integer digits with their leading
     zeros, as W9 prints them (0892.3456, 1088.1366; 001 L8945-8960), with its sign; a value
@@ -137,6 +135,37 @@ def expanded_text(value: float, decimals: int, digits: int = ABSOLUTE_DIGITS) ->
     width = 2 + digits + decimals
     text = f"{round(value, decimals) + 0.0:+0{width}.{decimals}f}"
     return text if len(text) <= width else "*" * width
+
+
+class RotaryReading:
+    """The rotary axes' scale readings in degrees (cells 6 and 7), for the absolute and
+    operator columns: :meth:`follow` sees every block in order. A rotary block (CODE -2)
+    turns its axis by its departure, read with option 118's units, option 120's sign and
+    option 117's sense, as the rotary element made it; a multiaxis move turns its axes in
+    the class's sense and its FROM states them (core/motion/multiaxis.py)."""
+
+    def __init__(self, machine: MachineDefinition) -> None:
+        per_degree = UNITS_PER_DEGREE.get(machine.number_option(118), 1.0)
+        sign = -1.0 if machine.number_option(120) == -1 else 1.0
+        scale = 1.0 if machine.number_option(117) >= 0 else -1.0
+        self.degrees_per_unit = sign * scale / per_degree
+        self.per_degree = per_degree
+        self.degrees = dict.fromkeys(ROTARY_CELLS, 0.0)
+
+    def follow(self, block: Block) -> None:
+        if block.rotary is not None:
+            cell = block.rotary[0]
+            value = block.cells[cell]
+            if cell in self.degrees and value is not ABSENT:
+                turned = self.degrees[cell] + self.degrees_per_unit * float(value)
+                self.degrees[cell] = normalise(turned)
+        elif block.code is Code.LINEAR or block.code is Code.FROM:
+            for cell in self.degrees:
+                value = block.cells[cell]
+                if value is ABSENT:
+                    continue
+                base = 0.0 if block.code is Code.FROM else self.degrees[cell]
+                self.degrees[cell] = normalise(base + float(value) / self.per_degree)
 
 
 def feed_text(ipm: float) -> str:
@@ -260,9 +289,22 @@ class Pages:
             text += self.add_line(line, cut, dwell)
         return text
 
+    def slew(self) -> str:
+        """End the page being filled, with the times to its last line (MACHIN/OFF under
+        option 218, 001 L26678-26687): the next line starts a new page."""
+        text = ""
+        if self.full is not None:
+            text = self._page(*self.full, last=False)
+            self.full = None
+        if self.lines:
+            text += self._page(self.lines, *self.times, last=False)
+            self.lines = []
+        return text
+
     def finish(self, cut: float, dwell: float) -> str:
-        """The last page (and a page held before it), with the run's times."""
-        if self.lines or (self.pages == 0 and self.full is None):
+        """The last page (and a page held before it), with the run's times; after a slew
+        with no line since, a last page of its own for the times and the footage."""
+        if self.lines or self.full is None:
             text = "" if self.full is None else self._page(*self.full, last=False)
             self.full = None
             return text + self._page(self.lines, cut, dwell, last=True)

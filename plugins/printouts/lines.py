@@ -24,7 +24,6 @@ from collections.abc import Sequence
 from gecent.core.absent import ABSENT
 from gecent.core.errors import NotYetSupported
 from gecent.core.machine.definition import MachineDefinition, RegisterSet
-from gecent.core.motion.rotary import UNITS_PER_DEGREE, normalise
 from gecent.core.output.block import Block, Code
 from gecent.core.output.format import RegisterFormatter
 from gecent.plugins.printouts.layout import (
@@ -34,9 +33,9 @@ from gecent.plugins.printouts.layout import (
     NOT_REGISTERS,
     PRINTABLE,
     RECORD_WIDTH,
-    ROTARY_CELLS,
     SPEED_WIDTH,
     Column,
+    RotaryReading,
     absolute_digits,
     absolute_width,
     axis_sources,
@@ -129,15 +128,9 @@ class DataLines:
             for cell in AXIS_CELLS
             if str(cell) in keys and (fmt := registers.formats[cell]) is not None
         }
-        # the rotary scale reading in degrees: option 118's units, option 120's sign and
-        # option 117's sense, as the rotary element makes its departures
-        per_degree = UNITS_PER_DEGREE.get(machine.number_option(118), 1.0)
-        sign = -1.0 if machine.number_option(120) == -1 else 1.0
-        scale = 1.0 if machine.number_option(117) >= 0 else -1.0
-        self.degrees_per_unit = sign * scale / per_degree
-        self.per_degree = per_degree
         self.point: tuple[int, ...] | None = None  # the machine point (steps), once known
-        self.degrees = dict.fromkeys(ROTARY_CELLS, 0.0)
+        self.rotary = RotaryReading(machine)  # the rotary scale readings in degrees
+        self.degrees = self.rotary.degrees
         fmt = registers.formats[1]
         self.numbers = (
             None
@@ -156,21 +149,7 @@ class DataLines:
         """The point a block reaches, and a rotary block's turn."""
         if block.position is not None:
             self.point = block.position
-        if block.rotary is not None:
-            cell = block.rotary[0]
-            value = block.cells[cell]
-            if cell in self.degrees and value is not ABSENT:
-                turned = self.degrees[cell] + self.degrees_per_unit * float(value)
-                self.degrees[cell] = normalise(turned)
-        elif block.code is Code.LINEAR or block.code is Code.FROM:
-            # a multiaxis move turns its rotary axes in the class's sense; its FROM gives
-            # their positions (core/motion/multiaxis.py)
-            for cell in self.degrees:
-                value = block.cells[cell]
-                if value is ABSENT:
-                    continue
-                base = 0.0 if block.code is Code.FROM else self.degrees[cell]
-                self.degrees[cell] = normalise(base + float(value) / self.per_degree)
+        self.rotary.follow(block)
 
     def sequence_text(self, number: int) -> str | None:
         """A unit-increasing sequence number in the N format, wrapped at SEQLIM as the

@@ -26,7 +26,7 @@ from dataclasses import dataclass
 from typing import IO
 
 from gecent.core.errors import InputError, SourcePosition
-from gecent.core.listing import environment
+from gecent.core.listing import environment, is_page_slew
 from gecent.core.machine.definition import MachineDefinition, RegisterSet
 from gecent.core.output.block import TEXT_CODES, Block, Code
 from gecent.core.output.tape import tape_line
@@ -200,6 +200,8 @@ class MultiplePages:
         parts = () if block.code in TEXT_CODES else self.printout.parts(block)
         for head, part in parts:
             self.heads[head].follow(part)
+        if is_page_slew(block):
+            return self._slew()
         if not block.printed:
             return ""
         text = ""
@@ -211,6 +213,17 @@ class MultiplePages:
                 text += printed.pages.add(lines, tally.cut, tally.dwell)
             else:
                 printed.spool.write(lines, tally.cut, tally.dwell)
+        return text
+
+    def _slew(self) -> str:
+        """MACHIN/OFF's page slew (option 218) in every printout: a kept printout's spool
+        holds it as a record without lines."""
+        text = ""
+        for printed in self.printed:
+            if printed.spool is None:
+                text += printed.pages.slew()
+            else:
+                printed.spool.write([], self.tally.cut, self.tally.dwell)
         return text
 
     def _lines(
@@ -244,7 +257,8 @@ class MultiplePages:
             for printed in self.printed:
                 if printed.spool is not None:
                     for lines, cut, dwell in printed.spool.read():
-                        text = printed.pages.add(lines, cut, dwell)
+                        pages = printed.pages  # (a block's record always has lines)
+                        text = pages.add(lines, cut, dwell) if lines else pages.slew()
                         if text:
                             yield text
                 yield printed.pages.finish(tally.cut, tally.dwell)

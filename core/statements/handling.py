@@ -1,0 +1,400 @@
+"""Tool handling at the home position and the positioning mode: GOHOME, LOAD/TOOL (LOADGM,
+GEMAXS, 001 L33878-33925), PICKUP (PKUPGP, GEPOS, L34568-34610), UNLOAD (UNLDGP, GEPOS,
+L39947-39988) and POSITN (PSTNGP, GEPOS, L34880-34932); spec 08 §2.22, §2.27, §2.29, §2.53.
+
+* **GOHOME** moves the slides to the home position, options 184-190 in machine coordinates
+  and CL order (L26455-26500): DEPART, SEGMNT and OUTPUT (L20693-20697, L21659), at the
+  feed in force or at rapid after RAPID, never linearity tested (GOHOME calls no LINRTY).
+* **LOAD/TOOL, n[, SMALL|LARGE][, LENGTH, l]** on a multiaxis machine: the machine's
+  MACFUN first (MCHCON 6, option 133), then GOHOME, then the load G code TABLEG(26-29) of
+  the head and gripper with T = n in a CODE -4 block; the loaded tool's R + TL come from
+  the class (MAFORK = 0): R options 102-105 by head and gripper, TL the length.
+* **PICKUP** and **UNLOAD** on a positioning machine: the tool's load (TABLEG 24, else the
+  cycle-off G and TABLEM 32) and unload (TABLEG 26 with T, else the cycle-off G and
+  TABLEM 33) codes, with comment 40 when the magazine is not at the tool's pocket.
+* **POSITN/OFF** outputs TABLEG(60) (CODE -4) and sets MODPOS 0; TRAV makes the mode in
+  force negative. FINE, NOBACK, COARSE and CORMIL need SET12, the positioning-mode G code
+  of each move, which the manual does not describe: they stop the run naming it.
+
+The readings of the manual these need are in docs/decisions.md ("LOAD, PICKUP, UNLOAD,
+GOHOME, POSITN").
+"""
+
+from __future__ import annotations
+
+from math import radians, sqrt
+from typing import TYPE_CHECKING, Any, Protocol, runtime_checkable
+
+from gecent.core.cl.records import Motion, MotionSubtype, Statement, Word
+from gecent.core.errors import Diagnostic, InputError, NotYetSupported
+from gecent.core.families import HookPoint
+from gecent.core.motion.linear import path_length
+from gecent.core.motion.rounding import to_steps
+from gecent.core.output.block import Block, Code
+
+if TYPE_CHECKING:
+    from gecent.core.dispatch.context import Post
+    from gecent.core.motion.linear import LinearMotion
+    from gecent.core.motion.multiaxis import MultiaxisMotion
+
+HOME_LINEAR = (184, 185, 186)  # X, Y, Z (machine coordinates, CL order)
+HOME_ROTARY = (187, 188, 189, 190)  # rotary head, rotary table, third rotary, secondary
+CYCLE_OFF = 1  # TABLEG(1)
+SELECT_TOOL_G = 24  # TABLEG(24): PICKUP's G code
+LOAD_TOOL_G = 26  # TABLEG(26): head 1, small gripper; 27 large; 28, 29 head 2
+TOOL_LOAD_M, TOOL_UNLOAD_M = 32, 33  # TABLEM
+POSITIONING_OFF_G = 60  # TABLEG(60)
+T_REGISTER = 13
+WRONG_POCKET = "ATTEMPTING TO UNLOAD TOOL IN WRONG MAGAZINE POCKET."  # comment 40
+MODES = {"OFF": 0, "FINE": 1, "NOBACK": 2, "COARSE": 3, "CORMIL": 4}
+
+
+@runtime_checkable
+class _Linear(Protocol):
+    """A run with a linear motion element (core/run.py's)."""
+
+    @property
+    def motion(self) -> LinearMotion: ...
+
+
+@runtime_checkable
+class _Multiaxis(Protocol):
+    """A run with a multiaxis element (core/run.py's)."""
+
+    @property
+    def multiaxis(self) -> MultiaxisMotion: ...
+
+
+class _Hooks(Protocol):
+    def macfun(self, hook: HookPoint, **fields: Any) -> bool: ...
+
+
+class _Engine(Protocol):
+    """The macro engine's MACFUN call (core/macros/events.py)."""
+
+    @property
+    def hooks(self) -> _Hooks: ...
+
+
+@runtime_checkable
+class _Macros(Protocol):
+    """A run that may have a macro engine, with the machine's MACFUN (core/run.py's)."""
+
+    @property
+    def macros(self) -> _Engine | None: ...
+
+
+def _multiaxis(run: Post, statement: Statement) -> MultiaxisMotion:
+    if not isinstance(run, _Multiaxis):
+        raise NotYetSupported(f"{statement.major} in this context", statement.where)
+    return run.multiaxis
+
+
+# -- GOHOME ------------------------------------------------------------------------------
+
+
+def gohome(run: Post, statement: Statement) -> None:
+    """GOHOME: the slides to the home position (options 184-190)."""
+    if statement.args:
+        raise InputError("GOHOME takes no values (options 184-190 give home)", statement.where)
+    _go_home(run, statement, None)
+
+
+def _go_home(run: Post, statement: Statement, target: list[float | None] | None) -> None:
+    """The move home; ``target``: the machine point a machine's MACFUN put in DPRESM
+    instead (LOAD's change point), X, Y, Z and the class's rotary axes in CL order, None
+    for an axis it left where it is."""
+    machine = run.machine
+    where = statement.where
+    if machine.number_option(1) != 0:
+        raise NotYetSupported("GOHOME on a positioning machine", where)
+    if not run.state.position.from_given:
+        raise InputError(
+            f"{statement.major} before any FROM: the slides' position, which the move home "
+            "starts from, is not known",
+            where,
+        )
+    home: list[float | None] = (
+        [machine.number_option(n) for n in HOME_LINEAR + HOME_ROTARY]
+        if target is None
+        else target + [None] * (len(HOME_LINEAR + HOME_ROTARY) - len(target))
+    )
+    if machine.multiaxis:
+        _multiaxis_home(run, _multiaxis(run, statement), statement, home)
+        return
+    if any(home[3:]):
+        raise NotYetSupported(
+            "GOHOME of a rotary axis (options 187-190) on a machine without multiaxis motion",
+            where,
+        )
+    # a machine without a transform class: its machine point is the CL point plus TRANS
+    position = run.state.position
+    point = tuple(
+        (position.present_part[axis] if value is None else value) - position.translation[axis]
+        for axis, value in enumerate(home[:3])
+    )
+    leg = Motion(statement.file, statement.line, statement.number, MotionSubtype.GOTO, (point,))
+    if not isinstance(run, _Linear):
+        raise NotYetSupported("GOHOME in this context", where)
+    _rapid_if_asked(run, path_length(run.state.position, leg))
+    run.motion.record(leg)
+
+
+def _rapid_if_asked(run: Post, length: float) -> None:
+    """TSTFLG: a RAPID given before GOHOME (or rapid in force) takes it at rapid."""
+    feed = run.state.feed
+    if feed.rapid_requested or feed.rapid_mode:
+        run.rapid.motion(length)
+
+
+def _multiaxis_home(
+    run: Post, motion: MultiaxisMotion, statement: Statement, home: list[float | None]
+) -> None:
+    """DEPART and SEGMNT to the home machine point: the linear axes in steps, each rotary
+    axis of the class (head, table, third) the shorter way to its home reading, as GOLINE
+    turns them; DPRESP is the home point through the class's inverse (MAFORK = 1)."""
+    import numpy as np
+
+    step = run.machine.number_option(14)
+    present = run.state.position.present
+    linear = [
+        present[axis] if value is None else to_steps(value, step)
+        for axis, value in enumerate(home[:3])
+    ]
+    rotary: list[int] = []
+    point = np.zeros(6)
+    point[0:3] = [steps * step for steps in linear]
+    for index, column in enumerate(motion.columns):
+        reading = home[3 + index]
+        now = motion.angles[index]
+        wanted = now if reading is None else reading / motion.per_degree  # degrees
+        if column not in motion.limited:
+            wanted = now + (wanted - now + 180.0) % 360.0 - 180.0
+        motion.angles[index] = wanted
+        rotary.append(round(wanted * motion.per_degree / motion.rotary_step))
+        point[column] = radians(rotary[-1] * motion.rotary_step / motion.per_degree)
+    part = [float(v) for v in motion.transform.inverse(point.reshape(1, 6), motion.kinematics)[0]]
+    before = run.state.position.previous_part
+    _rapid_if_asked(run, sqrt(sum((part[a] - before[a]) ** 2 for a in range(3))))
+    record = Motion(statement.file, statement.line, statement.number, MotionSubtype.GOTO, ())
+    # the element's own DEPART-SEGMNT-OUTPUT, for a machine point given, not a CL point
+    motion._reach(record, (part[0], part[1], part[2], part[3], part[4], part[5]), linear, rotary)
+    motion.machine_raw = point
+    motion.machine_previous = point.reshape(1, 6)
+    motion.tool_axis = (part[3], part[4], part[5])
+    motion.singular = False
+
+
+# -- LOAD --------------------------------------------------------------------------------
+
+
+def load(run: Post, statement: Statement) -> None:
+    """LOAD/TOOL, n[, SMALL|LARGE][, LENGTH, l] (LOADGM)."""
+    machine = run.machine
+    where = statement.where
+    if not machine.multiaxis:
+        # GECENT's LOAD is the multiaxis one (GEMAXS, "OPTAB(116) must be set"); APT's
+        # generic LOAD/TOOL elsewhere is a tool change gecent reads as LOADTL or TOOLNO
+        raise NotYetSupported(
+            "LOAD/TOOL on a machine without a transform class (option 116): give the tool "
+            "change as LOADTL/n or TOOLNO/n",
+            where,
+        )
+    tool, large, length = _load_arguments(statement)
+    if not run.state.position.from_given:
+        raise InputError("LOAD/TOOL before any FROM: a FROM must come first", where)
+    motion = _multiaxis(run, statement)
+    position = run.state.position
+    before = list(position.present)
+    engine = run.macros if isinstance(run, _Macros) else None
+    if engine is not None and engine.hooks.macfun(
+        HookPoint.LOAD, record=statement, values=statement.numbers(), words=statement.words()
+    ):
+        return  # (RETURN = 1: the machine's own load sequence did it all)
+    target: list[float | None] | None = None
+    if list(position.present) != before:  # (RETURN = 0 with DPRESM set: the change point)
+        step = machine.number_option(14)
+        target = [
+            None if now == was else now * step
+            for now, was in zip(position.present, before, strict=True)
+        ]
+        position.present[:] = before
+    _go_home(run, statement, target)
+    head = 2 if run.state.head == 2 else 1
+    cell = LOAD_TOOL_G + 2 * (head - 1) + int(large)
+    code = machine.g_code(cell)
+    if code is None:
+        gripper = "large" if large else "small"
+        raise InputError(
+            f"LOAD/TOOL with head {head}'s {gripper} gripper: machine {machine.label} has no "
+            f"load code for it (TABLEG({cell}))",
+            where,
+        )
+    block = Block(Code.G_ONLY, statement.number)
+    block.cells[2] = float(code)
+    if machine.registers.formats[T_REGISTER] is not None:
+        block.cells[T_REGISTER] = float(tool)
+    run.output.output(block)
+    loaded = run.state.tool
+    loaded.number = tool
+    loaded.large_gripper = large
+    if length is not None:
+        loaded.length = run.units.length(length)
+    _new_constants(run, motion)
+
+
+def _load_arguments(statement: Statement) -> tuple[int, bool, float | None]:
+    usage = "LOAD expects LOAD/TOOL, n[, SMALL|LARGE][, LENGTH, l] with n a whole number >= 0"
+    args = list(statement.args)
+    if len(args) < 2 or not isinstance(args[0], Word) or args[0].name != "TOOL":
+        raise InputError(usage, statement.where)
+    number = args[1]
+    if isinstance(number, Word) or number < 0 or number != int(number):
+        raise InputError(usage, statement.where)
+    large = False
+    length: float | None = None
+    rest = args[2:]
+    while rest:
+        word = rest.pop(0)
+        if isinstance(word, Word) and word.name in ("SMALL", "LARGE"):
+            large = word.name == "LARGE"
+        elif isinstance(word, Word) and word.name == "LENGTH" and rest:
+            value = rest.pop(0)
+            if isinstance(value, Word) or not value > 0:
+                raise InputError("LOAD/TOOL LENGTH expects a length > 0", statement.where)
+            length = float(value)
+        else:
+            raise InputError(usage, statement.where)
+    return int(number), large, length
+
+
+def _new_constants(run: Post, motion: MultiaxisMotion) -> None:
+    """MAFORK = 0: the loaded tool's R + TL; the tip of the new tool at the home machine
+    point gives DPRESP (MAFORK = 1), so the next move's path starts where the tip is."""
+    motion.load_constants()
+    import numpy as np
+
+    point = np.array(motion.machine_raw, dtype=float).reshape(1, 6)
+    part = [float(v) for v in motion.transform.inverse(point, motion.kinematics)[0]]
+    position = run.state.position
+    position.present_part[:] = part
+    position.previous_part[:] = part
+
+
+# -- PICKUP, UNLOAD ----------------------------------------------------------------------
+
+
+def _positioning(run: Post, statement: Statement) -> None:
+    if run.machine.number_option(1) not in (1.0, 2.0):
+        raise InputError(
+            f"{statement.major} belongs to a positioning machine (option 1 = 1 or 2)",
+            statement.where,
+        )
+
+
+def pickup(run: Post, statement: Statement) -> None:
+    """PICKUP (PKUPGP): the tool at the magazine's pocket goes into the spindle."""
+    _positioning(run, statement)
+    if statement.args:
+        raise InputError("PICKUP takes no values", statement.where)
+    machine = run.machine
+    state = run.state
+    code = machine.g_code(SELECT_TOOL_G)
+    if code is not None:
+        block = Block(Code.G_ONLY, statement.number)
+        block.cells[2] = float(code)
+    else:
+        m_code = machine.m_code(TOOL_LOAD_M)
+        if m_code is None:
+            raise InputError(
+                f"PICKUP: machine {machine.label} has no tool-load code: TABLEM(32) or "
+                "TABLEG(24) must be set",
+                statement.where,
+            )
+        block = _cycle_off_block(run, statement)
+        run.output.store_m(m_code)
+    state.tool.ready_to_unload = int(state.tool.number) if state.tool.number is not None else 0
+    run.output.output(block)
+
+
+def unload(run: Post, statement: Statement) -> None:
+    """UNLOAD (UNLDGP): the spindle's tool back into the magazine's pocket."""
+    _positioning(run, statement)
+    if statement.args:
+        raise InputError("UNLOAD takes no values", statement.where)
+    machine = run.machine
+    tool = run.state.tool
+    in_spindle = tool.ready_to_unload or 0
+    if in_spindle != (run.tool.position or 0):
+        run.warn(Diagnostic(WRONG_POCKET, statement.where))
+    code = machine.g_code(LOAD_TOOL_G)
+    if code is not None:
+        block = Block(Code.G_ONLY, statement.number)
+        block.cells[2] = float(code)
+        if machine.registers.formats[T_REGISTER] is not None:
+            block.cells[T_REGISTER] = float(in_spindle)
+    else:
+        m_code = machine.m_code(TOOL_UNLOAD_M)
+        if m_code is None:
+            raise InputError(
+                f"UNLOAD: machine {machine.label} has no tool-unload code: TABLEM(33) or "
+                "TABLEG(26) must be set",
+                statement.where,
+            )
+        block = _cycle_off_block(run, statement)
+        run.output.store_m(m_code)
+    tool.ready_to_unload = None
+    run.output.output(block)
+
+
+def _cycle_off_block(run: Post, statement: Statement) -> Block:
+    """A CODE -1 block with the cycle-off G code TABLEG(1), when the machine has one."""
+    block = Block(Code.AUX_ONLY, statement.number)
+    cycle_off = run.machine.g_code(CYCLE_OFF)
+    if cycle_off is not None:
+        block.cells[2] = float(cycle_off)
+    return block
+
+
+# -- POSITN ------------------------------------------------------------------------------
+
+
+def positn(run: Post, statement: Statement) -> None:
+    """POSITN/OFF|FINE|NOBACK|COARSE|CORMIL|TRAV (PSTNGP): MODPOS."""
+    _positioning(run, statement)
+    words = statement.words()
+    if len(statement.args) != 1 or len(words) != 1 or words[0] not in (*MODES, "TRAV"):
+        raise InputError(
+            "POSITN expects one of OFF, FINE, NOBACK, COARSE, CORMIL, TRAV", statement.where
+        )
+    modes = run.state.modes
+    mode = words[0]
+    if mode == "TRAV":
+        modes.positioning = -abs(modes.positioning)
+        return
+    if mode != "OFF":
+        raise NotYetSupported(
+            f"POSITN/{mode}: the positioning-mode G code SET12 puts in each move (the "
+            "manual does not describe SET12)",
+            statement.where,
+        )
+    code = run.machine.g_code(POSITIONING_OFF_G)
+    if code is None:
+        raise InputError(
+            f"POSITN/OFF: machine {run.machine.label} has no positioning-off code "
+            "(TABLEG(60); TABLEG 52-62 must be set)",
+            statement.where,
+        )
+    modes.positioning = MODES[mode]
+    block = Block(Code.G_ONLY, statement.number)
+    block.cells[2] = float(code)
+    run.output.output(block)
+
+
+HANDLERS = {
+    "GOHOME": gohome,
+    "LOAD": load,
+    "PICKUP": pickup,
+    "UNLOAD": unload,
+    "POSITN": positn,
+}
