@@ -10,7 +10,7 @@ into the control's command (CONTUR, core/feed/contour.py) and formats each regis
 from __future__ import annotations
 
 from collections.abc import Callable
-from math import asin, hypot, pi, radians
+from math import asin, hypot
 
 from gecent.core.absent import ABSENT, Absent
 from gecent.core.errors import Diagnostic, InputError, SourcePosition
@@ -18,7 +18,7 @@ from gecent.core.feed.accel import AccelerationTest, acceleration_test
 from gecent.core.feed.contour import FeedCommand, RapidCommand
 from gecent.core.feed.limits import FeedLimits
 from gecent.core.feed.optimise import FeedOptimiser
-from gecent.core.feed.positioning import XY, FeedContext, FeedType, Z
+from gecent.core.feed.positioning import FeedType
 from gecent.core.machine.definition import ROTARY_CELLS
 from gecent.core.motion.gcode import (
     CircularCodes,
@@ -41,6 +41,7 @@ from gecent.core.output.modern import (
     ModernControl,
     machine_planes,
 )
+from gecent.core.output.other_blocks import OtherBlocks
 from gecent.core.output.program import ModernProgram
 from gecent.core.output.words import Word, WordFormatter
 from gecent.core.state import SPINDLE_COMMAND, PostState
@@ -67,16 +68,13 @@ PLACED_CODES = MOTION_CODES | THREAD_CODES
 UNSHUFFLED = frozenset({Code.DWELL})
 # numeric blocks that get TABLEG(5) when they have no G and option 38 = +-1 (001 L24890-24907)
 G_FILLED = frozenset({Code.NONMOTION, Code.AUX_ONLY, Code.END, Code.DWELL})
-# POSFED's range test (001 L11214-11216): gecent's wording, the manual gives none
-COMMAND_ABOVE = "FEEDRATE COMMAND {:g} ABOVE THE MAXIMUM (OPTION 24); {:g} USED"
-COMMAND_BELOW = "FEEDRATE COMMAND {:g} BELOW THE MINIMUM (OPTION 49); {:g} USED"
 # comment 22 (001 L29355-29358): a TABLEM code the machine does not have
 NOT_AVAILABLE = "REQUESTED MISCELLANEOUS FUNCTION CODE IS NOT AVAILABLE ON THIS MACHINE"
 # non-motion blocks that may carry an option-98 F or an option-148 dwell (001 L9204-9258)
 NON_MOTION_DWELL = frozenset({Code.NONMOTION, Code.G_ONLY, Code.END})
 
 
-class OutputElement(ModernProgram):
+class OutputElement(ModernProgram, OtherBlocks):
     def __init__(self, state: PostState) -> None:
         machine = state.machine
         self.state = state
@@ -470,76 +468,6 @@ class OutputElement(ModernProgram):
             default=0.0,
         )
 
-    def _cycle(self, block: Block) -> None:
-        """A control's canned-cycle block (core/motion/control_cycles.py): its F is the
-        feed itself (option 254)."""
-        self._check_feed()
-        feed = self.state.feed
-        if self.modern.direct_feed:
-            block.cells[11] = self._direct_feed(block)
-        block.cells[19] = feed.ipm
-        block.cut_minutes = block.feed_length / feed.ipm if feed.ipm > 0 else 0.0
-        self.cut_minutes += block.cut_minutes
-        self.modern.at = list(block.position or ())[: self.modern.axes] or None
-
-    def _position(self, block: Block) -> None:
-        """POSIT and POSFED (001 L34780-34878): an absolute positioning block's F command
-        from the feed type, or the rapid marker: option 45's command (none when negative)
-        at the rapid rate."""
-        assert block.steps is not None and block.position is not None
-        if self.slide_limits.limits:
-            self.diagnostics.extend(self.slide_limits.test(block.position))
-        length = sum((s * self.step) ** 2 for s in block.steps) ** 0.5
-        feed = self.state.feed
-        if block.rapid:
-            limit = self.state.machine.number_option(45)
-            block.cells[11] = limit if limit >= 0 else ABSENT
-            ipm = abs(feed.rapid_ipm)
-        else:
-            assert self.positioning_feed is not None
-            self._check_feed()
-            spindle = self.state.spindle
-            context = FeedContext(
-                spindle.speed,
-                spindle.range,
-                feed.range,
-                self.milling,
-                Z if block.code is Code.POSITION_Z else XY,
-            )
-            command = self.positioning_feed.command(self.state.machine, feed.ipm, context)
-            self.diagnostics.extend(Diagnostic(text) for text in command.comments)
-            block.cells[11], ipm = self._position_command_limits(command.command, command.ipm)
-        block.cells[19] = ipm
-        block.cut_minutes = length / ipm if ipm > 0 else 0.0
-        self.cut_minutes += block.cut_minutes
-
-    def _position_command_limits(
-        self, command: float | Absent, ipm: float
-    ) -> tuple[float | Absent, float]:
-        """POSFED's only test (001 L11214-11216, spec 05 §4): the feed command within its
-        range extremes, options 49 and 24; the feed made then follows the command (a
-        command is proportional to its feed in every positioning type)."""
-        if command is ABSENT or not isinstance(command, float | int) or command <= 0:
-            return command, ipm
-        machine = self.state.machine
-        highest, lowest = machine.number_option(24), machine.number_option(49)
-        if highest > 0 and command > highest:
-            self.diagnostics.append(Diagnostic(COMMAND_ABOVE.format(command, highest)))
-            return highest, ipm * highest / command
-        if lowest > 0 and command < lowest:
-            self.diagnostics.append(Diagnostic(COMMAND_BELOW.format(command, lowest)))
-            return lowest, ipm * lowest / command
-        return command, ipm
-
-    def _thread(self, block: Block) -> None:
-        """A thread block comes finished from THREDO: no CONTUR, the lead and G are set;
-        the F register the control may have held is overwritten by a threading rate."""
-        if self.slide_limits.limits:
-            assert block.position is not None
-            self.diagnostics.extend(self.slide_limits.test(block.position))
-        self.cut_minutes += block.cut_minutes
-        self.words.previous_f = ABSENT
-
     def _check_feed(self) -> None:
         """No FEDRAT before the first cut: option 23, once, with the manual's comment
         (001 L34083, L24674-24679)."""
@@ -554,28 +482,6 @@ class OutputElement(ModernProgram):
             self.assumed_feed = True
             self.diagnostics.append(Diagnostic("OPTION FEEDRATE ASSUMED."))
             feed.ipm = assumed
-
-    def _rotary(self, block: Block) -> None:
-        """An incremental rotary block: SELGRO's G code, and the feed over the arc the part
-        radius (option 112) sweeps, held to the table's feed range (options 113, 114 in
-        RPM) (001 L10936-10984, L6171-6282)."""
-        assert block.rotary is not None
-        cell, degrees = block.rotary
-        code = self.rotary_codes.select(abs(float(block.cells[cell])))  # type: ignore[arg-type]
-        block.cells[2] = float(code.code)
-        machine = self.state.machine
-        radius = machine.number_option(112)
-        length = radians(degrees) * radius
-        per_rpm = 2 * pi * radius
-        low, high = machine.number_option(113) * per_rpm, machine.number_option(114) * per_rpm
-        self._check_feed()
-        ipm = min(max(self.state.feed.ipm, low), high)
-        command, ipm, f_format = self.feed.command(ipm, code.gdimul, length, code.size_class)
-        block.cells[11] = command
-        block.cells[19] = ipm
-        block.f_format = f_format
-        block.cut_minutes = length / ipm
-        self.cut_minutes += block.cut_minutes
 
     # -- GEOUT: words and the tape line (flow chart 12) ----------------------------------
 

@@ -16,7 +16,7 @@ from gecent.core.cl.records import Statement
 from gecent.core.errors import InputError
 from gecent.core.output.block import Block, Code
 from gecent.core.output.marks import leader_block, stand_in
-from gecent.core.spindle import leave_sfm
+from gecent.core.spindle_sfm import leave_sfm
 from gecent.core.state import COOLANT, StateVector
 
 if TYPE_CHECKING:

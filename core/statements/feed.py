@@ -11,7 +11,8 @@ from gecent.core.errors import Diagnostic, InputError, NotYetSupported
 from gecent.core.feed.positioning import FeedContext
 from gecent.core.feed.rapid import feed_range_cell
 from gecent.core.motion.sfm import range_feed_limits
-from gecent.core.spindle import assumed_speed, leave_sfm
+from gecent.core.spindle import assumed_speed
+from gecent.core.spindle_sfm import leave_sfm
 from gecent.core.state import FEED_M
 
 _FEED_UNITS = ("IPM", "MMPM", "IPR", "MMPR")
