@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import pytest
 from gecent.core.cl.apt_source import AptSourceReader
-from gecent.core.errors import InputError, NotYetSupported
+from gecent.core.errors import InputError, MachineDefinitionError
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.machine.loader import standard_machine
 from gecent.core.output.tape import tape_lines
@@ -119,8 +119,9 @@ def test_option_219_puts_the_range_code_in_a_block_before_the_dwell() -> None:
 
 def test_a_negative_option_93_is_output_by_macfun() -> None:
     """ "A negative value means ... Dwell is output by a special machine function subroutine"
-    (001 L25508-25511): not built."""
-    with pytest.raises(NotYetSupported, match="option 93 < 0"):
+    (001 L25508-25511): MACH04 has no MACFUN (option 133 = 0), so its machine file is wrong
+    (issue 22: no longer "not yet supported"; with a MACFUN, tests/test_statement_forms.py)."""
+    with pytest.raises(MachineDefinitionError, match="option 133 = 0"):
         post(["FEDRAT/1,RANGE,1"], mach04({93: -2.0}))
 
 
@@ -192,6 +193,8 @@ def test_bad_forms_name_what_is_expected(statement: str, message: str) -> None:
         post([statement], mach04())
 
 
-def test_other_fedrat_words_are_not_built() -> None:
-    with pytest.raises(NotYetSupported, match="FEDRAT/IPR"):
+def test_other_fedrat_words_are_bad_input() -> None:
+    # issue 22: FEDRAT's scan knows IPM, IPR, RANGE and MAXIPM (001 L31139-31164); a second
+    # unit word is bad input, no longer "not yet supported"
+    with pytest.raises(InputError, match="FEDRAT/IPR"):
         post(["FEDRAT/1,IPM,IPR"], mach04())

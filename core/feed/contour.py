@@ -171,9 +171,6 @@ class RapidCommand:
         if length == 0.0:
             # a rapid that only turns the rotary axes (a multiaxis machine): no slide to time
             return None, ipm
-        if length == 0.0:
-            # a rapid that only turns the rotary axes (a multiaxis machine): no slide to time
-            return None, ipm
         command = gdimul * ipm / length
         if command > self.maximum:
             command = self.maximum

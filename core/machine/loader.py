@@ -242,6 +242,17 @@ def _store(
     return tuple(store), feed_ranges, srtab_top, feeds
 
 
+def output_sequence(iorder: list[int], problems: _Problems) -> tuple[int, ...]:
+    """IORDER as the manual defines it (001 L26953-27009, WE-14): IORDER(i) is the output
+    position of register location i. Kept as the locations in output order (the locations
+    it does not give come after, in location order)."""
+    if len(iorder) > 30 or len(set(iorder)) != len(iorder) or not all(1 <= p <= 30 for p in iorder):
+        problems.add("output_order", "iorder", "IORDER must give distinct output positions 1..30")
+        return tuple(range(1, 31))
+    listed = sorted(range(1, len(iorder) + 1), key=lambda location: iorder[location - 1])
+    return (*listed, *range(len(iorder) + 1, 31))
+
+
 def build_definition(
     file: MachineFile, origin: str, base: MachineDefinition | None
 ) -> MachineDefinition:
@@ -281,7 +292,7 @@ def build_definition(
     options = _options(file.optab, option_base, problems)
     store, feed_ranges, srtab_top, feed_table = _store(file, base, options, problems)
     order = (
-        tuple(file.output_order.iorder)
+        output_sequence(file.output_order.iorder, problems)
         if file.output_order
         else (base.output_order if base else None)
     )

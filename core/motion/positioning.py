@@ -12,7 +12,11 @@ Everything a positioning machine outputs is absolute:
   and under option 40 a repeated X or Y is left out of a block that moves the other;
 * with no cycle in force the block gets the cycle-off G code TABLEG(1); under a cycle, the
   cycle's G code (TABLEG 82-88), so each XY position runs the control's cycle;
-* the F command is made at output by the positioning feed type (POSFED, option 78).
+* the F command is made at output by the positioning feed type (POSFED, option 78);
+* SET12 gives a move with no cycle the G code of the positioning mode POSITN set (MODPOS,
+  001 L34913, L34952-34955): FINE TABLEG(52), NOBACK 53, COARSE 54, CORMIL 61 or 62 by the
+  feed range, TRAV (MODPOS < 0) 58, or 63 in IPR mode; with no mode, TABLEG(1) (POSMOV's
+  step 7). The manual does not describe SET12: docs/decisions.md ("Statement forms").
 
 A cycle is set up by one CODE -16 block: the cycle's G code, Z = the plunge and R = the
 distance at rapid, both measured down from the tool's height (CURNTZ). CL files give each
@@ -28,7 +32,7 @@ from collections.abc import Callable
 
 from gecent.core.absent import ABSENT, Absent
 from gecent.core.cl.records import Motion, MotionSubtype
-from gecent.core.errors import Diagnostic, InputError, NotYetSupported
+from gecent.core.errors import Diagnostic, InputError, NotYetSupported, SourcePosition
 from gecent.core.motion.cycles import CYCLE_TYPES, Cycle
 from gecent.core.motion.linear import godlta_point
 from gecent.core.motion.rounding import to_steps
@@ -37,6 +41,42 @@ from gecent.core.state import PostState
 
 NEGATIVE_Z = "Z IS BELOW ZERO AFTER THE OPTION 140 ADJUSTMENT"  # comment 66 (text lost)
 X, Y, Z = 0, 1, 2
+# SET12: MODPOS -> TABLEG location (chart L22710-22714, L22805-22854; decisions.md)
+MODE_G = {1: 52, 2: 53, 3: 54}  # FINE (backlash takeup), NOBACK (none), COARSE
+CORNER_MILLING_G = {1: 61, 2: 62}  # CORMIL, by the feed range IFDRNG
+TRAVERSE_G, TRAVERSE_IPR_G = 58, 63  # TRAV: traverse to feed without a stop, IPM or IPR
+MODE_NAMES = {1: "FINE", 2: "NOBACK", 3: "COARSE", 4: "CORMIL"}
+
+
+def mode_g_location(state: PostState) -> int | None:
+    """SET12's TABLEG location for the positioning mode in force (MODPOS); None for
+    POSITN/OFF (or none given), where a move takes the cycle-off code TABLEG(1)."""
+    mode = state.modes.positioning
+    if mode == 0:
+        return None
+    if mode < 0:
+        return TRAVERSE_IPR_G if state.feed.per_revolution else TRAVERSE_G
+    if mode == 4:
+        return CORNER_MILLING_G[2 if state.feed.range == 2 else 1]
+    return MODE_G[mode]
+
+
+def set12(state: PostState, where: SourcePosition | None = None) -> float | None:
+    """SET12 (001 L34952-34955, L5612-5614): the positioning mode's G code, or None when
+    no mode is in force. A machine without the mode's code is bad input naming it."""
+    location = mode_g_location(state)
+    if location is None:
+        return None
+    code = state.machine.g_code(location)
+    if code is None:
+        mode = state.modes.positioning
+        name = "TRAV" if mode < 0 else MODE_NAMES[mode]
+        raise InputError(
+            f"POSITN/{name}: machine {state.machine.label} has no positioning-mode code "
+            f"TABLEG({location}) (POSITN needs TABLEG 52-62)",
+            where,
+        )
+    return code
 
 
 class PositioningMotion:
@@ -143,7 +183,7 @@ class PositioningMotion:
             moved[X] = moved[Y] = True
         self._rapid_test([steps[a] - previous[a] for a in range(3)])
         if g_code is ABSENT:
-            g_code = self.cycle_off
+            g_code = self._set12(record)
         if self.z_mode < 0:
             if any(moved):
                 self._block(record, Code.POSITION_XY, steps, (X, Y, Z), g_code)
@@ -153,6 +193,12 @@ class PositioningMotion:
             if self.z_mode > 0 and moved[Z]:
                 self._block(record, Code.POSITION_Z, steps, (Z,), g_code)
         self._arrive(part, steps)
+
+    def _set12(self, record: Motion) -> float | Absent:
+        """The G of a positioning block with no cycle G: the positioning mode's (SET12),
+        else the cycle-off code TABLEG(1)."""
+        code = set12(self.state, record.where)
+        return self.cycle_off if code is None else code
 
     def _block(
         self,
@@ -215,7 +261,7 @@ class PositioningMotion:
             part, steps = self._machine_point(lowered)
             previous = self.state.position.previous
             self._rapid_test([steps[a] - previous[a] for a in range(3)])
-            self._block(record, Code.POSITION_Z, steps, (Z,), self.cycle_off)
+            self._block(record, Code.POSITION_Z, steps, (Z,), self._set12(record))
             self._arrive(part, steps)
             height, plunge, rapid_distance = part[Z], plunge - rapid_distance, 0.0
         wanted = (g_code, to_steps(plunge, self.step), to_steps(rapid_distance, self.step))

@@ -16,7 +16,7 @@ from typing import TYPE_CHECKING
 from gecent.core.absent import ABSENT
 from gecent.core.cl.records import Statement, Word
 from gecent.core.cl.vocabulary import vocabulary
-from gecent.core.errors import Diagnostic, InputError, NotYetSupported
+from gecent.core.errors import Diagnostic, InputError
 from gecent.core.output.block import Block, Code
 from gecent.core.output.element import NOT_AVAILABLE
 from gecent.core.statements.auxiliary import code_by_itself
@@ -230,14 +230,12 @@ def draft(run: Post, statement: Statement) -> None:
 
 def disregarded(run: Post, statement: Statement) -> None:
     """SWITCH and PPUNCH (no AUXLRY routine), SET, MODE and PIVOTZ (AUXLRY routines the
-    manual does not describe): disregarded with a warning in the listing. MODE on a
-    machine with special functions is its MACFUN subroutine MODE, and PIVOTZ on a
-    multiaxis machine may move the pivot its transform uses: neither is built."""
-    machine = run.machine
-    if statement.major == "MODE" and machine.number_option(133) == 1:
-        raise NotYetSupported("MODE on a machine with special functions (MACFUN subroutine MODE)")
-    if statement.major == "PIVOTZ" and machine.multiaxis:
-        raise NotYetSupported("PIVOTZ on a multiaxis machine")
+    manual does not describe): disregarded with a warning in the listing, on every machine.
+    MODE and PIVPLN are GEMAXS routines with no write-up (001 L19040-19067); the MACFUN
+    list names a "Subroutine MODE" hook (L27566) with no number and no text, and the
+    sample MACFUN MACF40 answers MCHCON 1, 2, 6, 7, 8 only (RETURN = 0 for the rest), so a
+    machine with special functions (option 133 = 1) or a multiaxis machine does the same
+    (docs/decisions.md, "Statement forms")."""
     run.warn(Diagnostic(f"{statement.major}: {NO_PROCESSING}", statement.where))
 
 

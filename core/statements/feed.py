@@ -7,7 +7,7 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 from gecent.core.cl.records import Arg, Statement, Word
-from gecent.core.errors import Diagnostic, InputError, NotYetSupported
+from gecent.core.errors import Diagnostic, InputError, MachineDefinitionError, NotYetSupported
 from gecent.core.feed.positioning import FeedContext
 from gecent.core.feed.rapid import feed_range_cell
 from gecent.core.motion.sfm import range_feed_limits
@@ -102,7 +102,13 @@ def scan_fedrat(statement: Statement) -> FedratRequest:
             else:
                 request.range = _range_number(item, statement)
         else:
-            raise NotYetSupported(f"FEDRAT/{name}", statement.where)
+            # FEDRAT's scan knows IPM, IPR, RANGE (LOW, MEDIUM, HIGH) and MAXIPM only
+            # (001 L31139-31164); MMPM and MMPR are APT IV's metric IPM and IPR
+            raise InputError(
+                f"FEDRAT/{name}: FEDRAT takes a feed with IPM, IPR, MMPM or MMPR (one of "
+                "them), RANGE and MAXIPM",
+                statement.where,
+            )
     # a feed value may be left out only when RANGE or MAXIPM says something (FEDRAT/RANGE,2)
     alone = request.range is None and request.maximum is None
     if len(values) > 1 or (not values and (alone or request.unit is not None)):
@@ -158,7 +164,21 @@ def _select_range(run: Post, requested: int | None, statement: Statement) -> Non
     seconds = machine.number_option(93)
     if seconds < 0:
         # "dwell is output by a special machine function subroutine" (001 L25507-25511)
-        raise NotYetSupported("feed range change dwell by MACFUN (option 93 < 0)", statement.where)
+        if machine.number_option(133) != 1:
+            raise MachineDefinitionError(
+                machine.origin,
+                "optab",
+                93,
+                f"option 93 = {seconds:g} leaves the feed range change dwell to the machine's "
+                "MACFUN, but the machine has none (option 133 = 0)",
+            )
+        # no sample MACFUN makes this dwell (MACF40 answers MCHCON 1, 2, 6, 7 and 8 only,
+        # 001 L27599ff.) and the MCHCON number of FEDRAT's hook is not legible (L27406-27568)
+        raise NotYetSupported(
+            "feed range change dwell by the machine's MACFUN (option 93 < 0): gecent has no "
+            "MACFUN hook for it",
+            statement.where,
+        )
     if seconds > 0:
         if machine.number_option(219) == 1:
             output.flush_m(statement.number)  # the M code in a block before the dwell
@@ -235,9 +255,14 @@ def _positioning_snap(run: Post, feed: float, statement: Statement) -> float:
 
 
 def rapid(run: Post, statement: Statement) -> None:
-    """RAPID: the next motion record goes at rapid traverse (option 109)."""
+    """RAPID: the next motion record goes at rapid traverse (option 109). RAPID takes
+    nothing: RAPGB reads no values and its only input is the call (001 L35202-35230)."""
     if statement.args:
-        raise NotYetSupported(f"RAPID/{statement.args[0]}", statement.where)
+        shown = ",".join(a.name if isinstance(a, Word) else f"{a:g}" for a in statement.args)
+        raise InputError(
+            f"RAPID/{shown}: RAPID takes no values (the manual's RAPID is the word alone)",
+            statement.where,
+        )
     run.rapid.request()
 
 

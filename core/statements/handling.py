@@ -12,9 +12,10 @@ L39947-39988) and POSITN (PSTNGP, GEPOS, L34880-34932); spec 08 §2.22, §2.27, 
 * **PICKUP** and **UNLOAD** on a positioning machine: the tool's load (TABLEG 24, else the
   cycle-off G and TABLEM 32) and unload (TABLEG 26 with T, else the cycle-off G and
   TABLEM 33) codes, with comment 40 when the magazine is not at the tool's pocket.
-* **POSITN/OFF** outputs TABLEG(60) (CODE -4) and sets MODPOS 0; TRAV makes the mode in
-  force negative. FINE, NOBACK, COARSE and CORMIL need SET12, the positioning-mode G code
-  of each move, which the manual does not describe: they stop the run naming it.
+* **POSITN/OFF** outputs TABLEG(60) (CODE -4) and sets MODPOS 0; FINE, NOBACK, COARSE
+  and CORMIL set MODPOS 1-4 and output nothing; TRAV makes the mode in force negative.
+  Each later positioning move with no cycle carries the mode's G code (SET12,
+  core/motion/positioning.py), which the machine must have.
 
 The readings of the manual these need are in docs/decisions.md ("LOAD, PICKUP, UNLOAD,
 GOHOME, POSITN").
@@ -29,6 +30,7 @@ from gecent.core.cl.records import Motion, MotionSubtype, Statement, Word
 from gecent.core.errors import Diagnostic, InputError, NotYetSupported
 from gecent.core.families import HookPoint
 from gecent.core.motion.linear import path_length
+from gecent.core.motion.positioning import CORNER_MILLING_G, MODE_G, set12
 from gecent.core.motion.rounding import to_steps
 from gecent.core.output.block import Block, Code
 
@@ -371,13 +373,12 @@ def positn(run: Post, statement: Statement) -> None:
     mode = words[0]
     if mode == "TRAV":
         modes.positioning = -abs(modes.positioning)
+        set12(run.state, statement.where)  # (the machine must have the traverse code)
         return
     if mode != "OFF":
-        raise NotYetSupported(
-            f"POSITN/{mode}: the positioning-mode G code SET12 puts in each move (the "
-            "manual does not describe SET12)",
-            statement.where,
-        )
+        _require_mode_codes(run, statement, mode)
+        modes.positioning = MODES[mode]
+        return
     code = run.machine.g_code(POSITIONING_OFF_G)
     if code is None:
         raise InputError(
@@ -389,6 +390,23 @@ def positn(run: Post, statement: Statement) -> None:
     block = Block(Code.G_ONLY, statement.number)
     block.cells[2] = float(code)
     run.output.output(block)
+
+
+def _require_mode_codes(run: Post, statement: Statement, mode: str) -> None:
+    """The codes the mode's moves take ("TABLEG(52-62) must be set", L34929-34932):
+    CORMIL's of both feed ranges on a machine with two (option 18)."""
+    if mode == "CORMIL":
+        ranges = 2 if run.machine.number_option(18) >= 2 else 1
+        locations = [CORNER_MILLING_G[r] for r in range(1, ranges + 1)]
+    else:
+        locations = [MODE_G[MODES[mode]]]
+    for location in locations:
+        if run.machine.g_code(location) is None:
+            raise InputError(
+                f"POSITN/{mode}: machine {run.machine.label} has no positioning-mode code "
+                f"TABLEG({location}) (POSITN needs TABLEG 52-62)",
+                statement.where,
+            )
 
 
 HANDLERS = {

@@ -5,6 +5,13 @@ is routed by a multihead program's first pass (core/multihead/first_pass.py); me
 single-head run it is refused. SELECT/OFSETL,n (SELOFS, L37146-37182) puts the offset n in
 register 17 of a CODE 1 block, SELECT/TABLE,n (SELTAB, L37250-37285) the table n in
 register 16; SELECT/TOOL,n (SELTUL, L37287-37335) preselects a tool (core/tool.py).
+
+SELECT/HED,SADDLE, d[, TRAV | , f[, IPM|IPR]] (SELHED to SADDLE, GELATH, L36448-36512):
+the saddle's move d in register 16, at rapid (TRAV: TABLEM(25) with option 87's dwell
+into rapid and back to feed) or at the feed f (none: option 84) in the mode given (none:
+option 85, with "OPTION FEEDRATE MODE ASSUMED."), the F left in IPM or IPR, not a command;
+a move longer than the maximum departure (option 4) is cut into equal blocks (SEGSAD).
+The statement's layout is not in the manual: docs/decisions.md ("Statement forms").
 """
 
 from __future__ import annotations
@@ -13,9 +20,11 @@ from collections.abc import Callable
 from typing import TYPE_CHECKING
 
 from gecent.core.cl.records import Statement, Word
-from gecent.core.errors import Diagnostic, InputError, NotYetSupported
+from gecent.core.errors import Diagnostic, InputError, MachineDefinitionError, NotYetSupported
+from gecent.core.motion.rounding import to_steps
 from gecent.core.output.block import Block, Code
 from gecent.core.statements.auxiliary import code_by_itself
+from gecent.core.statements.feed import feed_limits
 
 if TYPE_CHECKING:
     from gecent.core.dispatch.context import Post
@@ -28,6 +37,11 @@ PALLET_CELL = 13  # "Pallet select change" (001 L23103)
 READER_CELL = 14  # "Switch reader" (001 L23105)
 OFFSET_REGISTER = 17  # SELOFS: "The offset code is stored in DBFSEG(17)" (001 L37160)
 TABLE_REGISTER = 16  # SELTAB: "stored in DBFSEG(16) and is output" (001 L37272)
+SADDLE_REGISTER = 16  # "The saddle move is stored in DBFSEG(16)" (001 L36482)
+SADDLE_RAPID_CELL = 25  # TABLEM(25) "Rapid traverse on saddle" (001 L23115)
+FEED_REGISTER = 11
+FEED_MODE_ASSUMED = "OPTION FEEDRATE MODE ASSUMED."  # SADDLE's comment (001 L36490-36491)
+SADDLE_USAGE = "SELECT/HED,SADDLE expects a move d, then TRAV, or a feed f with IPM or IPR"
 
 
 def select(run: Post, statement: Statement) -> None:
@@ -39,7 +53,11 @@ def select(run: Post, statement: Statement) -> None:
     minor = args[0].name
     handler = _MINORS.get(minor)
     if handler is None:
-        raise NotYetSupported(f"SELECT/{minor}", statement.where)
+        # SELECT calls the routine its minor word names (001 L36895-36925); SELANG's word
+        # is not in the manual
+        known = ", ".join(sorted(_MINORS))
+        hint = "; the saddle is SELECT/HED,SADDLE,..." if minor == "SADDLE" else ""
+        raise InputError(f"SELECT/{minor}: SELECT takes one of {known}{hint}", statement.where)
     handler(run, statement)
 
 
@@ -95,12 +113,123 @@ def _tool(run: Post, statement: Statement) -> None:
 
 
 def _head(run: Post, statement: Statement) -> None:
-    """SELECT/HEAD,n reaches a run only when the program is not a multihead one."""
+    """SELECT/HEAD,n reaches a run only when the program is not a multihead one;
+    SELECT/HED,SADDLE is the saddle's move."""
+    rest = statement.args[1:]
+    if rest and isinstance(rest[0], Word) and rest[0].name == "SADDLE":
+        saddle(run, statement)
+        return
     raise InputError(
         "SELECT/HEAD selects a head of a multihead program: COMBIN/2 must come first, "
         "before the first motion, on a machine with two heads",
         statement.where,
     )
+
+
+def saddle(run: Post, statement: Statement) -> None:
+    """SELECT/HED,SADDLE, d[, TRAV | , f[, IPM|IPR]] (SADDLE, 001 L36448-36512)."""
+    machine = run.machine
+    where = statement.where
+    rest = statement.args[2:]
+    numbers = [float(a) for a in rest if not isinstance(a, Word)]
+    words = [a.name for a in rest if isinstance(a, Word)]
+    rapid = "TRAV" in words
+    units = [w for w in words if w in ("IPM", "IPR")]
+    if (
+        not rest
+        or isinstance(rest[0], Word)
+        or any(w not in ("TRAV", "IPM", "IPR") for w in words)
+        or len(words) != len(set(words))
+        or len(units) > 1
+        or len(numbers) > (1 if rapid else 2)
+        or (rapid and units)
+    ):
+        raise InputError(SADDLE_USAGE, where)
+    if machine.registers.formats[SADDLE_REGISTER] is None:
+        raise InputError(
+            f"SELECT/HED,SADDLE: machine {machine.label} has no saddle register "
+            f"(REGFOR({SADDLE_REGISTER}))",
+            where,
+        )
+    if run.state.sfm.active:
+        # SADSFM: "SADSFM = 1 for saddle SFM, SADSFM = 0 after SFM is called" (L36474-36478)
+        raise NotYetSupported("a saddle move under SFM (SADSFM, SFMO for the saddle)", where)
+    step = machine.number_option(14)
+    steps = to_steps(run.units.length(numbers[0]), step)
+    if steps == 0:
+        return  # no move: no block
+    feed = None if rapid else _saddle_feed(run, statement, numbers[1:], units)
+    dwell = machine.number_option(87) if rapid else 0.0
+    output = run.output
+    if dwell > 0:
+        _dwell(run, statement, dwell)  # into rapid
+    if rapid:
+        output.store_cell(SADDLE_RAPID_CELL, run.warn, where)
+    for part in _segments(steps, machine.number_option(4), step):
+        block = Block(Code.NONMOTION, statement.number)
+        block.cells[SADDLE_REGISTER] = part * step
+        if feed is not None:
+            block.cells[FEED_REGISTER] = feed
+        output.output(block)
+    if dwell > 0:
+        _dwell(run, statement, dwell)  # back to feed
+
+
+def _saddle_feed(run: Post, statement: Statement, given: list[float], units: list[str]) -> float:
+    """The saddle's F: f as given (option 84 when none), in the mode given (option 85 when
+    none, with the comment); an IPM feed is held to the feed range's limits."""
+    machine = run.machine
+    if given:
+        feed = given[0]
+        if feed <= 0:
+            raise InputError(f"SELECT/HED,SADDLE needs a feed > 0, found {feed:g}", statement.where)
+    else:
+        feed = machine.number_option(84)
+        if feed <= 0:
+            raise MachineDefinitionError(
+                machine.origin, "optab", 84, f"option 84 = {feed:g}: the saddle's feed must be > 0"
+            )
+    if units:
+        per_minute = units[0] == "IPM"
+    else:
+        assumed = machine.number_option(85)
+        if assumed == 0:
+            raise MachineDefinitionError(
+                machine.origin,
+                "optab",
+                85,
+                "option 85 = 0: a saddle move without IPM or IPR stops the run (001 L25395-25405)",
+            )
+        run.warn(Diagnostic(FEED_MODE_ASSUMED, statement.where))
+        per_minute = assumed > 0
+    if not per_minute:
+        return feed
+    low, high = feed_limits(run)
+    used = min(max(feed, low), high)
+    if used != feed:
+        run.warn(
+            Diagnostic(
+                f"FEEDRATE {feed:g} IPM IS OUTSIDE THE MACHINE RANGE {low:g}-{high:g}; "
+                f"{used:g} IPM USED",
+                statement.where,
+            )
+        )
+    return used
+
+
+def _segments(steps: int, maximum: float, step: float) -> list[int]:
+    """SEGSAD: a move longer than the maximum departure in equal parts, in whole steps,
+    the last taking what rounding left."""
+    largest = to_steps(maximum, step) if maximum > 0 else abs(steps)
+    count = -(-abs(steps) // largest) if largest > 0 else 1
+    part = int(steps / count)
+    return [part] * (count - 1) + [steps - part * (count - 1)]
+
+
+def _dwell(run: Post, statement: Statement, seconds: float) -> None:
+    block = run.output.dwell(seconds)
+    block.record = statement.number
+    run.output.output(block)
 
 
 _MINORS: dict[str, Callable[[Post, Statement], None]] = {

@@ -40,7 +40,13 @@ MOTION_RECORDS = (
     MOTION_CODES
     | POSITION_CODES
     | THREAD_CODES
-    | {Code.ROTARY_INCREMENTAL, Code.ROTARY_ABSOLUTE, Code.CYCLE, Code.FROM}
+    | {
+        Code.ROTARY_INCREMENTAL,
+        Code.ROTARY_ABSOLUTE,
+        Code.TURRET_CORRECTION,
+        Code.CYCLE,
+        Code.FROM,
+    }
 )
 
 

@@ -50,6 +50,7 @@ PRINTABLE = (
         Code.FROM,
         Code.ROTARY_INCREMENTAL,
         Code.ROTARY_ABSOLUTE,
+        Code.TURRET_CORRECTION,
         Code.NONMOTION,
         Code.AUX_ONLY,
         Code.DWELL,
