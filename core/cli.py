@@ -24,6 +24,7 @@ from gecent.core.cli_support import (
     installed_plugins,
     load_machine,
     machine_override,
+    ptonly_override,
     reporting_errors,
 )
 from gecent.core.cli_tools import cl_command, plot_command, verify_command
@@ -187,6 +188,14 @@ def machine_show(key: str, show_all: bool, as_json: bool) -> None:
     help="Also use the macros of this Python file (docs/macros.md); may be repeated.",
 )
 @click.option(
+    "--ptonly",
+    "ptonly_deck_path",
+    type=click.Path(dir_okay=False, exists=True),
+    metavar="DECK",
+    help="A PTONLY/2 run: INPUT is a saved CL tape and DECK holds PTONLY/2, MACHIN/GECENT,n "
+    "and FINI; the machine is the deck's, the tape's MACHIN statements change options only.",
+)
+@click.option(
     "--no-fast-path",
     "general_path",
     is_flag=True,
@@ -203,6 +212,7 @@ def post(
     max_segments: int,
     dialect: str | None,
     macro_files: tuple[str, ...],
+    ptonly_deck_path: str | None,
     general_path: bool,
 ) -> None:
     """Postprocess a CL file into a tape image and a printed listing.
@@ -215,6 +225,10 @@ def post(
     plugins = installed_plugins()
     for macro_file in macro_files:
         plugins = with_macros(plugins, load_macro_file(macro_file), f"file {macro_file}")
+    if ptonly_deck_path is not None:
+        machine_key, deck_notes = ptonly_override(ptonly_deck_path, machine_key)
+        for note in deck_notes:
+            click.echo(str(note), err=True)
     override = machine_override(plugins, machine_key)
     stem = "stdin" if input_path == "-" else Path(input_path).stem
     tape_target = Path(tape_path) if tape_path else Path(stem + ".tape")

@@ -11,7 +11,13 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any, TypeVar
 
 import click
-from gecent.core.errors import EXIT_INTERNAL, GecentError, InputError, InternalError
+from gecent.core.errors import (
+    EXIT_INTERNAL,
+    Diagnostic,
+    GecentError,
+    InputError,
+    InternalError,
+)
 from gecent.core.families import MachinePack
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.plugins import PluginSet, get_plugins
@@ -85,6 +91,18 @@ def machine_override(plugins: PluginSet, key: str | None) -> str | MachineDefini
     if key is not None and (key.endswith(".toml") or os.sep in key):
         return load_machine(plugins, key)
     return key
+
+
+def ptonly_override(deck: str, machine_key: str | None) -> tuple[str | None, list[Diagnostic]]:
+    """--ptonly DECK: the machine a PTONLY/2 deck names (core/machine/selection.py), as the
+    --machine it stands for; none when its MACHIN gives no number (the tape's own then)."""
+    from gecent.core.cl.apt_source import read_apt_source
+    from gecent.core.machine.selection import ptonly_deck
+
+    if machine_key is not None:
+        raise InputError("give --machine or --ptonly, not both: the deck names the machine")
+    number, notes = ptonly_deck(read_apt_source(deck))
+    return (None if number is None else str(number)), notes
 
 
 def _missing(key: str) -> MachineDefinition:

@@ -410,7 +410,10 @@ class Run(Elements):
             self.positioning.record(record, self.cycle)
             return
         if self.cycle is not None and record.subtype is not MotionSubtype.FROM:
-            self._cycle_points(record)
+            if multiaxis:
+                self._multiaxis_holes(record)  # CYCLGX: along the tool axis
+            else:
+                self._cycle_points(record)
             return
         if self.state.threading.armed and record.subtype is not MotionSubtype.FROM:
             feed = self.state.feed
@@ -444,12 +447,19 @@ class Run(Elements):
         """What a multiaxis machine's motion does not do yet stops the run naming it."""
         if positioning:
             raise NotYetSupported("multiaxis motion on a positioning machine", record.where)
-        if self.cycle is not None:
-            raise NotYetSupported("a canned cycle on a multiaxis machine", record.where)
         if self.state.threading.armed:
             raise NotYetSupported("THREAD on a multiaxis machine", record.where)
         if self.state.sfm.active:
             raise NotYetSupported("SFM on a multiaxis machine", record.where)
+
+    def _multiaxis_holes(self, record: Motion) -> None:
+        """CYCLGX: each point a hole drilled along its tool axis, through the transform
+        (core/motion/multiaxis_cycles.py)."""
+        from gecent.core.motion.multiaxis_cycles import MultiaxisHoles
+
+        assert self.cycle is not None
+        holes = MultiaxisHoles(self.state, self.output, self.rapid, self.multiaxis)
+        self.cycle_first_z = holes.record(record, self.cycle, self.cycle_first_z)
 
     def _cycle_points(self, record: Motion) -> None:
         """Each point of a record under CYCLE is a hole: its moves go through the rapid and

@@ -51,11 +51,13 @@ from gecent.core.spindle_sfm import leave_sfm, machine_mm, radial_axis, sfm_requ
 from gecent.core.spindle_types import (
     CCLW,
     CLW,
+    NO_DIRECTION,
     SAME_SPEED,
     Running,
     SpindleRequest,
     SpindleType,
 )
+from gecent.core.spindle_words import HOLDING, check_rpm_words, hold, neutral, speed_and_range
 from gecent.core.state import SFM, SPINDLE_COMMAND, SPINDLE_M, SPINDLE_RANGE, PostState
 
 TOO_FAST_FOR_THREADING = "SPINDLE SPEED IS TOO HIGH FOR THREADING"
@@ -106,21 +108,24 @@ class SpindleElement:
             self._sfm(statement, words)
             return
         if "NEUTRL" in words:
-            self._neutral(statement)
+            neutral(self.state, self.output, statement, self.has_s_register)
             self.s_in_force = None  # (option 99's S, or none: not known here)
             return
-        unbuilt = [w for w in words if w not in ("RPM", "CLW", "CCLW", "RANGE", "ON", "OFF")]
-        if unbuilt:
-            raise NotYetSupported(f"SPINDL/{unbuilt[0]}", statement.where)
+        held = [w for w in words if w in HOLDING]
+        if not held:
+            check_rpm_words(statement, words)
         if self.state.sfm.active:
             leave_sfm(self.state)  # any other SPINDL ends the SFM mode (option 2, L24361)
             self.warn(Diagnostic(RPM_ESTABLISHED, statement.where))
+        if held:
+            hold(self.state, self.output, self.warn, statement, held[0])
+            return
         if "OFF" in words:
             if len(statement.args) != 1:
                 raise InputError("SPINDL/OFF takes nothing else", statement.where)
             self._off(statement)
             return
-        speed, requested_range = _speed_and_range(statement)
+        speed, requested_range = speed_and_range(statement)
         self._on(statement.where, statement.number, speed, requested_range, words)
 
     def change_speed(
@@ -302,6 +307,8 @@ class SpindleElement:
                     "SPINDL needs CLW or CCLW: option 34 = 0 assumes no direction", where
                 )
             direction = CLW if assumed > 0 else CCLW
+            if getattr(self.spindle_type, "names_missing_direction", False):
+                self.warn(Diagnostic(NO_DIRECTION, where))  # (TYPE03/04/10/13/16's comment)
         reversed_ = spindle.on and direction != spindle.direction
         was_on = spindle.on
         if reversed_:
@@ -315,6 +322,7 @@ class SpindleElement:
             self.warn(Diagnostic("RANGE REQUESTED IS NOT AVAILABLE, USE HIGHEST", where))
             requested_range = int(machine.number_option(7))
         selection = None
+        running: Running | None = None
         if self.has_s_register:
             if self.spindle_type is None:
                 raise NotYetSupported(f"spindle type {self.type_number} (option 19)", where)
@@ -366,8 +374,17 @@ class SpindleElement:
                 spindle.range_code = code
         cells = selection.direction_cells if selection and selection.direction_cells else _M_CELL
         range_changed = selection is not None and selection.range != spindle.range
+        # option 77: the spindle-on M code in the S block (0), a block before it (+1) or a
+        # block after it (-1); an SFM piece's S rides in its motion block with its M
+        placement = 0.0 if ride else machine.number_option(77)
+        turn_on_cell = None
         if not was_on or reversed_ or (cells is not _M_CELL and range_changed):
-            self._store(cells[direction], where)
+            if placement < 0:
+                turn_on_cell = cells[direction]
+            else:
+                self._store(cells[direction], where)
+                if placement > 0:
+                    self.output.flush_m(record)
         spindle.speed, spindle.direction, spindle.on = speed, direction, True
         spindle.restart = None  # (a tool change's stop: this SPINDL starts it)
         if selection is not None:
@@ -387,19 +404,35 @@ class SpindleElement:
             block = self.output.dwell(selection.dwell_after)
             block.record = record
             self.output.output(block)
+            self._turn_on_after(turn_on_cell, where, record)
             return
         if ride:
             return
         pending = self.state.pending
         if self.drop_redundant_s and pending.spindle is ABSENT and pending.m_code is ABSENT:
-            return  # its S was redundant (option 171) and it has no M: no block
+            # its S was redundant (option 171) and it has no M: no block
+            self._turn_on_after(turn_on_cell, where, record)
+            return
         self.output.output(Block(Code.NONMOTION, record))
-        if selection is not None and range_changed and not selection.steps:
-            seconds = machine.number_option(54)
-            if seconds > 0 and not getattr(self.spindle_type, "own_dwells", False):
-                block = self.output.dwell(seconds)  # option 54: the range-change dwell
-                block.record = record
-                self.output.output(block)
+        self._turn_on_after(turn_on_cell, where, record)
+        if selection is None:
+            return
+        seconds = 0.0
+        own_dwells = getattr(self.spindle_type, "own_dwells", False)
+        if range_changed and not selection.steps and not own_dwells:
+            seconds = machine.number_option(54)  # option 54: the range-change dwell
+        if running is not None and abs(selection.speed - running.speed) > SAME_SPEED:
+            # option 193: the dwell for a change of speed (one dwell block: the longer)
+            seconds = max(seconds, machine.number_option(193))
+        if seconds > 0:
+            block = self.output.dwell(seconds)
+            block.record = record
+            self.output.output(block)
+
+    def _turn_on_after(self, cell: int | None, where: SourcePosition, record: int) -> None:
+        """Option 77 = -1: the spindle-on M code in a block of its own after the S block."""
+        if cell is not None and self.output.store_cell(cell, self.warn, where) is not None:
+            self.output.flush_m(record)
 
     def _off(self, statement: Statement) -> None:
         machine = self.state.machine
@@ -421,29 +454,6 @@ class SpindleElement:
         if self.output.store_cell(_OFF_CELL, self.warn, statement.where) is not None:
             self.output.output(Block(Code.AUX_ONLY, statement.number))
 
-    def _neutral(self, statement: Statement) -> None:
-        """SPINDL/NEUTRL (option 99, 001 L25604-25617): the S command option 99 gives, in
-        command form (0.1 punches S00), in a block of its own as any SPINDL's S; option 99
-        = 0 outputs nothing. The speed and range in force stay (a later SPINDL/ON finds
-        them), and the listing's S-RPM shows the command."""
-        if len(statement.args) != 1:
-            raise InputError("SPINDL/NEUTRL takes nothing else", statement.where)
-        machine = self.state.machine
-        command = machine.number_option(99)
-        if command == 0:
-            return
-        if not self.has_s_register:
-            raise MachineDefinitionError(
-                machine.origin,
-                "optab",
-                99,
-                f"option 99 = {command:g} is the S code of SPINDL/NEUTRL, but the machine has "
-                "no S register (REGFOR(12) = 0)",
-            )
-        self.state.pending.spindle = command
-        self.state.pending.rpm = command
-        self.output.output(Block(Code.NONMOTION, statement.number))
-
     def _store(self, cell: int, where: SourcePosition) -> None:
         self.output.store_cell(cell, self.warn, where)
 
@@ -455,26 +465,3 @@ def assumed_speed(machine: MachineDefinition, where: SourcePosition | None) -> f
     if speed <= 0:
         raise FatalError(24, f"option 27 = {speed:g}", where)
     return speed
-
-
-def _speed_and_range(statement: Statement) -> tuple[float | None, int | None]:
-    """The speed is the first number not taken by RANGE,r; minor words may come before or
-    after it (SPINDL/10,RPM,CLW or SPINDL/RPM,10,CLW as Creo writes it)."""
-    speed: float | None = None
-    requested_range: int | None = None
-    args = statement.args
-    index = 0
-    while index < len(args):
-        arg = args[index]
-        if isinstance(arg, Word) and arg.name == "RANGE":
-            if index + 1 >= len(args) or isinstance(args[index + 1], Word):
-                raise InputError("SPINDL RANGE expects a range number", statement.where)
-            requested_range = int(float(args[index + 1]))  # type: ignore[arg-type]
-            index += 2
-            continue
-        if not isinstance(arg, Word):
-            if speed is not None:
-                raise InputError("SPINDL expects one speed", statement.where)
-            speed = float(arg)
-        index += 1
-    return speed, requested_range

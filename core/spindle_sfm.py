@@ -6,7 +6,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from gecent.core.cl.records import Arg, Statement, Word
-from gecent.core.errors import InputError, NotYetSupported
+from gecent.core.errors import InputError
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.machine.shuffle import decode_shuffle
 from gecent.core.motion.sfm import range_feed_limits
@@ -60,7 +60,7 @@ def radial_axis(machine: MachineDefinition) -> int:
 
 
 def sfm_request(statement: Statement, words: list[str], default_axis: int) -> SfmRequest:
-    """The SFM statement's items: one surface speed, SFM, at most one of CLW/CCLW, and the
+    """The SFM statement's items: one surface speed, SFM, at most one of CLW/CCLW, ON, and the
     couplets RANGE,r, RADIUS,XCOORD|YCOORD|ZCOORD|R, MAXIPM,v and MAXRPM,s in any order;
     without RADIUS the radius is ``default_axis``."""
     where = statement.where
@@ -85,8 +85,12 @@ def sfm_request(statement: Statement, words: list[str], default_axis: int) -> Sf
             index += 1
         elif arg.name in _DIRECTION_WORDS:
             directions.append(_DIRECTION_WORDS[arg.name])
-        elif arg.name != "SFM":
-            raise NotYetSupported(f"SPINDL/SFM with {arg.name}", where)
+        elif arg.name not in ("SFM", "ON"):  # (ON: the statement starts the spindle anyway)
+            raise InputError(
+                f"SPINDL/SFM does not take {arg.name}: it takes CLW or CCLW, RANGE,r, "
+                "RADIUS,XCOORD|YCOORD|ZCOORD|r, MAXIPM,v and MAXRPM,s",
+                where,
+            )
     if surface is None or surface <= 0:
         raise InputError("SPINDL/SFM expects a surface speed > 0 (feet per minute)", where)
     if len(directions) > 1:

@@ -108,6 +108,8 @@ class Pending:
     spindle: float | Absent = ABSENT
     m_code: float | Absent = ABSENT
     rpm: float | None = None  # the speed the waiting S command stands for (listing S-RPM)
+    # option 1 = 2: TOOLNO's T held for the next motion block (001 L24332-24358)
+    tool: float | Absent = ABSENT
 
 
 @dataclass(slots=True)

@@ -23,15 +23,16 @@ the Z translation (+1: the change since the first tool; +2: less the length; neg
 POSMOV adds the length, core/motion/positioning.py).
 
 On a positioning machine (TOOLGP) the T goes out at once with the cycle-off G code TABLEG(1)
-in a CODE -1 block, and the output adds the spindle command to it (option 1 = 1).
+in a CODE -1 block, and the output adds the spindle command to it (option 1 = 1); with option
+1 = 2 no block is made: the T waits for the next motion block (core/output/element.py).
 
 A modern control (gecent option 263, docs/modern-controls.md) numbers the tool's offsets:
 ADJUST h, OFSETL k or the tool number. A mill (263 = 1) gives it as H with G43 in the first
 move after the tool change and as D with CUTCOM; LOADTL LENGTH is accepted, since the control
 holds the lengths. A lathe (263 = 2) punches T as station and offset, two digits each.
 
-TURRET on a positioning machine and T merged into the next motion block (option 1 = 2) are
-not built and stop the run with an error naming them.
+TURRET on a positioning machine (the manual's TURRET is the contouring lathe's) is not built
+and stops the run with an error naming it.
 """
 
 from __future__ import annotations
@@ -217,8 +218,6 @@ class ToolElement:
             raise InputError(f"{statement.major} takes one of CLW and CCLW", where)
         if machine.number_option(1) != 0 and positions > 1:
             raise NotYetSupported(f"{statement.major} on a positioning machine", where)
-        if machine.number_option(1) == 2:
-            raise NotYetSupported("T merged into the following motion block (option 1 = 2)", where)
         numbers = _plain_numbers(statement)
         offset = _value_after(statement, "OFSETL")
         # a turret's distances a, b may be any length; the tool and position are counts
@@ -316,7 +315,10 @@ class ToolElement:
         if offset_m is not None:
             self.output.store_m(offset_m)
         self.position = station
-        if has_t and machine.number_option(1) != 0:
+        if has_t and machine.number_option(1) == 2:
+            # TOOLGP makes no block: the T waits for the next motion block (001 L24346-24349)
+            self.state.pending.tool = float(t_code)
+        elif has_t and machine.number_option(1) != 0:
             # TOOLGP: the cycle-off G code and the T in a CODE -1 block (001 L38648-38692)
             block = Block(Code.AUX_ONLY, statement.number)
             cycle_off = machine.g_code(1)

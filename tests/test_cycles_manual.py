@@ -204,9 +204,10 @@ def test_a_lathe_with_the_cycle_code_puts_it_in_a_block_by_itself() -> None:
     assert any("DEPTH, CLEAR NOT OUTPUT" in note.text for note in notes)
 
 
-def test_a_cycle_on_a_machine_without_z_is_not_supported() -> None:
+def test_a_cycle_on_a_machine_without_z_is_bad_input() -> None:
+    """No axis to drill along: the plunge would go out on no register (issue 22)."""
     flat = load_machine_text('[machine]\nname = "xy"\ntitle = "XY"\n[optab]\n59 = 131400\n')
-    with pytest.raises(NotYetSupported, match="no Z axis"):
+    with pytest.raises(InputError, match="no Z axis"):
         post(["FROM/0,0,1", "CYCLE/DRILL,1,IPM,2,0.1", "GOTO/0,0,0"], flat)
 
 
@@ -234,26 +235,29 @@ def test_a_control_bores_with_a_dwell_by_its_g89(tmp_path: Path) -> None:
     cycle = next(line for line in lines if "G89" in line)
     assert "Z-5." in cycle and "R2." in cycle and "P1.5" in cycle
     assert any(line.endswith("G80") for line in lines)
-    with pytest.raises(NotYetSupported, match=r"CYCLE/BORE with DWELL .*TABLEG\(94\)"):
-        pack_tape(tmp_path, BORE_DWELL, "linuxcnc-mill")  # the pack has no G89
+    # the pack has no G89: drilled by moves (issue 22, tests/test_cycles_wave3.py)
+    lines = pack_tape(tmp_path, BORE_DWELL, "linuxcnc-mill")
+    assert "N5 G04 P1.5" in lines and not any("G89" in line for line in lines)
 
 
-def test_control_refusals_name_what_is_missing(tmp_path: Path) -> None:
-    """A DRILL with a DWELL is G82: a control file without it says so (no crash); DEEP takes
-    no P; OUT has no G-code control counterpart."""
+def test_what_the_control_cannot_drill_is_drilled_by_moves(tmp_path: Path) -> None:
+    """A DRILL with a DWELL is G82: a control file without it has it drilled by moves; DEEP
+    takes no P; OUT has no G-code control counterpart (issue 22: each drilled by moves, no
+    cycle G code on the tape)."""
     plugins = get_plugins()
     base = resolve_machine(plugins, "linuxcnc-mill", None)
     no_g82 = load_machine_text(
         '[machine]\nname = "n"\ntitle = "N"\n[tableg]\n83 = "absent"\n', base=base
     )
     drill = BORE_DWELL.replace("CYCLE/BORE", "CYCLE/DRILL")
-    with pytest.raises(NotYetSupported, match=r"DRILL with DWELL .*TABLEG\(83\)"):
-        pack_tape(tmp_path, drill, no_g82)
-    with pytest.raises(NotYetSupported, match="CYCLE/DEEP with DWELL"):
-        pack_tape(tmp_path, BORE_DWELL.replace("CYCLE/BORE", "CYCLE/DEEP"), "linuxcnc-mill")
+    deep = BORE_DWELL.replace("CYCLE/BORE", "CYCLE/DEEP")
     out = load_machine_text('[machine]\nname = "o"\ntitle = "O"\n[tableg]\n89 = 89\n', base=base)
-    with pytest.raises(NotYetSupported, match="CYCLE/OUT by the control"):
-        pack_tape(tmp_path, BORE_DWELL.replace("CYCLE/BORE", "CYCLE/OUT"), out)
+    for text, machine in ((drill, no_g82), (deep, "linuxcnc-mill")):
+        lines = pack_tape(tmp_path, text, machine)
+        assert "N5 G04 P1.5" in lines and not any(" G8" in line for line in lines[3:])
+    lines = pack_tape(tmp_path, BORE_DWELL.replace("CYCLE/BORE", "CYCLE/OUT"), out)
+    assert lines[lines.index("N4 G01 Z-5. F50.") + 1] == "N5 G04 P1.5"  # and stays there
+    assert not any("G89" in line for line in lines)
 
 
 def test_inhibt_ends_a_control_cycle_with_g80(tmp_path: Path) -> None:

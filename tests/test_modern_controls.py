@@ -208,9 +208,13 @@ def test_control_cycles(plugins: PluginSet, tmp_path: Path) -> None:
     ]
 
 
-def test_cycle_return_to_another_level_stops(plugins: PluginSet, tmp_path: Path) -> None:
-    from gecent.core.errors import NotYetSupported
-
+def test_cycle_return_to_another_level_is_drilled_by_moves(
+    plugins: PluginSet, tmp_path: Path
+) -> None:
+    """G98/G99 return to the start or R only: RETURN,5 is drilled by moves (issue 22,
+    tests/test_cycles_wave3.py), back to 5 above the top."""
     text = CYCLES.replace("RETURN, 0", "RETURN, 5")
-    with pytest.raises(NotYetSupported, match="RETURN"):
-        tape(plugins, tmp_path, text, "linuxcnc-mill")
+    lines = tape(plugins, tmp_path, text, "linuxcnc-mill")
+    assert not any("G82" in line for line in lines)
+    assert any(line.endswith("G04 P0.5") for line in lines)
+    assert lines[lines.index("N8 G80") + 5] == "N13 G00 Z5."

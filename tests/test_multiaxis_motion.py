@@ -166,7 +166,8 @@ def test_a_tool_axis_not_of_length_one_is_warned(plugins: PluginSet, tmp_path: P
 @pytest.mark.parametrize(
     ("line", "feature"),
     [
-        ("CYCLE/DRILL,1,10,IPM,0.1", "a canned cycle on a multiaxis machine"),
+        # a hole along another tool axis than the one the tool stands at (issue 22)
+        ("CYCLE/DRILL,1,10,IPM,0.1\nGOTO/2,1,9,0,0,1", "tool axis .* not the one"),
     ],
 )
 def test_what_multiaxis_motion_does_not_do_yet_is_named(

@@ -8,7 +8,7 @@ from __future__ import annotations
 import math
 
 import pytest
-from gecent.core.errors import InputError, NotYetSupported
+from gecent.core.errors import InputError
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.machine.loader import load_machine_text
 from gecent.core.motion.rotary import long_way_targets
@@ -213,6 +213,8 @@ def test_devices_are_positioning_statements() -> None:
         post(["ROTATE/INDEXER,1"], contouring)
 
 
-def test_torch_stays_unbuilt() -> None:
-    with pytest.raises(NotYetSupported, match="ROTATE/TORCH"):
+def test_torch_needs_a_flame_cutter() -> None:
+    """ROTATE/TORCH is a flame cutter's (option 132 = 4; tests/test_rotary_wave3.py): on
+    this positioning machine it is bad input."""
+    with pytest.raises(InputError, match="TORCH"):
         post(["ROTATE/TORCH,INCR,10"], machine())

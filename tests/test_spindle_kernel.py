@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import pytest
 from gecent.core.errors import MachineDefinitionError, NotYetSupported
-from gecent.core.machine.loader import standard_machine
+from gecent.core.machine.loader import load_machine_text, standard_machine
 from gecent.core.output.tape import tape_lines
 from gecent.core.plugins import get_plugins
 from gecent.core.spindle_types import (
@@ -60,9 +60,12 @@ def test_spindle_off_without_m05_is_a_comment_and_no_empty_block() -> None:
     assert [d.text for d in result.diagnostics][-1].startswith("REQUESTED MISCELLANEOUS")
 
 
-def test_sfm_on_a_circle_is_named_as_not_built() -> None:
-    machine = get_plugins().machine("mach04").load()
-    with pytest.raises(NotYetSupported, match="SFM on circles"):
+def test_sfm_on_a_circle_in_one_block_is_named_as_not_built() -> None:
+    """SFM on quadrant circles is built (tests/test_spindle_wave3.py); a control taking the
+    whole arc in one block (option 253) is not."""
+    base = get_plugins().machine("mach04").load()
+    machine = load_machine_text('[machine]\nname = "m"\n[optab]\n253 = 1.0\n', "m.toml", base=base)
+    with pytest.raises(NotYetSupported, match="SFM on a circle in one block"):
         post(
             [
                 "FROM/5,2,0",

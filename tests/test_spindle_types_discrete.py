@@ -7,7 +7,7 @@ from __future__ import annotations
 from typing import Any
 
 import pytest
-from gecent.core.errors import MachineDefinitionError, NotYetSupported
+from gecent.core.errors import MachineDefinitionError
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.machine.loader import load_machine_text
 from gecent.core.output.tape import tape_lines
@@ -357,11 +357,11 @@ def test_type4_on_tape() -> None:
     ]
 
 
-def test_type4_down_shift_speed_is_not_built() -> None:
-    """TYPE04's down-shift speed SHFSPD (001 L39314-39322) is not described: a type 4
-    machine with option 137 set stops with "not yet supported"."""
+def test_type4_shift_rows_are_type_2s() -> None:
+    """Type 4's down-shift takes option 137 = -N (tests/test_spindle_wave3.py); +N, the
+    shift row, is type 2's (001 L26008-26023): a machine-definition error here."""
     machine = example(4, replace={"19 = 4.0": "19 = 4.0\n137 = 5.0"})
-    with pytest.raises(NotYetSupported):
+    with pytest.raises(MachineDefinitionError, match="137"):
         select(4, machine, 600)
 
 

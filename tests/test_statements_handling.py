@@ -60,8 +60,7 @@ def test_gohome_moves_to_options_184_to_186() -> None:
 def test_gohome_needs_a_from_and_a_contouring_machine() -> None:
     with pytest.raises(InputError, match="before any FROM"):
         post(["GOHOME"], standard_machine())
-    with pytest.raises(NotYetSupported, match="GOHOME on a positioning machine"):
-        post(["FROM/0,0,0", "GOHOME"], positioning())
+    # (GOHOME on a positioning machine is built: tests/test_tools_wave3.py)
     with pytest.raises(InputError, match="no values"):
         post(["FROM/0,0,0", "GOHOME/1"], standard_machine())
 

@@ -27,8 +27,8 @@ from gecent.core.cl.records import Fini, Motion, MotionSubtype, Multiax, Other, 
 from gecent.core.dispatch.post import post as dispatch_post
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.machine.loader import load_machine_text, standard_machine
-from gecent.core.motion.circle import _quadrant, quadrant_crossings
 from gecent.core.motion.linear import LinearMotion
+from gecent.core.motion.quadrants import _quadrant, quadrant_crossings
 from gecent.core.output.block import Code
 from gecent.core.output.tape import tape_line
 from gecent.core.plugins import get_plugins

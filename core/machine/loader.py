@@ -180,6 +180,21 @@ def _options(
     return tuple(values)
 
 
+TABLE_SPEED_CELL = 141  # TABSPD: "the table speeds are stored beginning at SRTAB(141)"
+
+
+def table_speed_cells(options: tuple[OptionValue, ...]) -> range:
+    """SRTAB(141 ..): option 179 ranges of option 180 rotary table speeds (001
+    L38130-38131, L26428-26439); empty when the options are not whole numbers."""
+    ranges, per_range = options[179], options[180]
+    if not isinstance(ranges, float) or not isinstance(per_range, float):
+        return range(0)
+    count = ranges * per_range
+    if count != int(count) or not 0 < count <= STORE_SIZE - TABLE_SPEED_CELL + 1:
+        return range(0)
+    return range(TABLE_SPEED_CELL, TABLE_SPEED_CELL + int(count))
+
+
 def _store(
     file: MachineFile,
     base: MachineDefinition | None,
@@ -193,15 +208,23 @@ def _store(
         store = list(base.store)
         feed_ranges = base.feed_ranges
         srtab_top = base.srtab_top
+    table_cells = table_speed_cells(options)
+    table_given = False
     if file.spindle_table is not None:
         if file.spindle_table.speeds:
             # A new speed table replaces the standard one; FRTAB words are re-laid below.
+            # The rotary table's speeds (SRTAB 141 up, TABSPD) are a table of their own.
+            kept = {index: store[index] for index in table_cells}
             store = [ABSENT] * (STORE_SIZE + 1)
             srtab_top = min(len(file.spindle_table.speeds), STORE_SIZE)
             if len(file.spindle_table.speeds) > STORE_SIZE:
                 problems.add("spindle_table", "speeds", f"at most {STORE_SIZE} values fit SRTAB")
             for index, speed in enumerate(file.spindle_table.speeds[:STORE_SIZE], start=1):
                 store[index] = speed
+            for index, value in kept.items():
+                if value is not ABSENT:
+                    table_given = True
+                    store[index] = value if index > srtab_top else store[index]
         for index, value in sorted(file.spindle_table.cells.items()):
             if not 1 <= index <= STORE_SIZE:
                 problems.add(
@@ -209,7 +232,17 @@ def _store(
                 )
             else:
                 store[index] = value
-                srtab_top = max(srtab_top, index)
+                if index in table_cells:  # a table speed is not a spindle speed
+                    table_given = True
+                else:
+                    srtab_top = max(srtab_top, index)
+    if table_given and srtab_top >= TABLE_SPEED_CELL:
+        problems.add(
+            "spindle_table",
+            "speeds",
+            f"the spindle speeds (SRTAB 1..{srtab_top}) run into the rotary table speeds "
+            f"(SRTAB {TABLE_SPEED_CELL} up, options 179 x 180)",
+        )
     if file.feed_ranges is not None:
         feed_ranges = tuple((float(lo), float(hi)) for lo, hi in file.feed_ranges.ranges)
     feeds = base.feed_table if base is not None else ()
@@ -228,6 +261,13 @@ def _store(
                 "speeds",
                 f"SRTAB (cells 1..{srtab_top}) and FRTAB (cells {indfr + 1}..{STORE_SIZE}, "
                 f"option 174 = {int(size)}) overlap in the shared {STORE_SIZE}-word store",
+            )
+        if any(store[i] is not ABSENT for i in table_cells if i > indfr):
+            problems.add(
+                "spindle_table",
+                "cells",
+                f"the rotary table speeds (SRTAB {TABLE_SPEED_CELL} up, options 179 x 180) and "
+                f"FRTAB (cells {indfr + 1}..{STORE_SIZE}, option 174 = {int(size)}) overlap",
             )
         for index in range(indfr + 1, STORE_SIZE + 1):
             store[index] = ABSENT

@@ -9,7 +9,7 @@ from collections.abc import Iterable
 from dataclasses import dataclass, field
 from math import isfinite
 
-from gecent.core.cl.records import Motion, Record, Statement, Word
+from gecent.core.cl.records import Comment, Fini, Motion, Record, Statement, Word
 from gecent.core.errors import (
     Diagnostic,
     FatalError,
@@ -41,6 +41,7 @@ class MachinRequest:
     number: int | None
     options: list[tuple[int, float, SourcePosition]] = field(default_factory=list)
     modifiers: list[str] = field(default_factory=list)
+    where: SourcePosition | None = None  # the statement's place, for what it is told
 
     @property
     def off(self) -> bool:
@@ -65,7 +66,7 @@ def parse_machin(statement: Statement) -> MachinRequest | None:
             raise InputError(
                 f"MACHIN/GECENT has a value that is not a finite number ({arg})", where
             )
-    request = MachinRequest(number=None)
+    request = MachinRequest(number=None, where=where)
     position = 1
     if position < len(args) and isinstance(args[position], int | float):
         value = float(args[position])  # type: ignore[arg-type]
@@ -117,6 +118,69 @@ def first_machin(records: Iterable[Record]) -> tuple[MachinRequest | None, list[
                 Diagnostic(f"MACHIN/{name} names another postprocessor; ignored", record.where)
             )
     return None, notes
+
+
+def ptonly_deck(records: Iterable[Record]) -> tuple[int | None, list[Diagnostic]]:
+    """The machine of a PTONLY/2 run (manual §3.1.1.1.1, 001 L2538-2565): the deck
+    ``PTONLY/2``, ``MACHIN/GECENT, n``, ``FINI`` postprocesses a saved CL tape. Its MACHIN
+    fills IPOSTP, the postprocessor's name and machine number (001 L2456-2521), and the run
+    takes its machine from there, not from the tape; so the deck's MACHIN gives the machine
+    number only, and OPTAB pairs or modifiers on it are said to be ignored (they reach no CL
+    tape: the tape's own MACHIN statements change the options, 001 L2563-2565). MACHIN for
+    another postprocessor is passed over as on a tape; a second MACHIN/GECENT would post the
+    tape once more, for another machine: one post per machine here."""
+    notes: list[Diagnostic] = []
+    mode_seen = False
+    chosen: MachinRequest | None = None
+    for record in records:
+        if isinstance(record, Fini):
+            break
+        if isinstance(record, Comment):
+            continue
+        if not isinstance(record, Statement):
+            raise InputError("a PTONLY/2 deck holds PTONLY/2, MACHIN and FINI only", record.where)
+        if not mode_seen and record.major != "PTONLY":
+            raise InputError("a PTONLY/2 deck must begin with PTONLY/2", record.where)
+        if record.major == "PTONLY":
+            if record.args != (2.0,):
+                shown = ",".join(str(a) for a in record.args)
+                raise InputError(
+                    f"PTONLY/{shown}: only PTONLY/2 (postprocess a saved CL tape) is a "
+                    "postprocessor run",
+                    record.where,
+                )
+            mode_seen = True
+        elif record.major == "MACHIN":
+            request = parse_machin(record)
+            if request is None:
+                name = record.args[0] if record.args else ""
+                notes.append(
+                    Diagnostic(f"MACHIN/{name} names another postprocessor; ignored", record.where)
+                )
+                continue
+            if chosen is not None:
+                raise InputError(
+                    "a second MACHIN/GECENT in the PTONLY/2 deck: post the tape once per machine",
+                    record.where,
+                )
+            chosen = request
+            if request.options or request.modifiers:
+                notes.append(
+                    Diagnostic(
+                        "PTONLY/2: THE DECK'S MACHIN GIVES THE MACHINE NUMBER ONLY; ITS "
+                        "OPTAB AND MODIFIERS ARE IGNORED (THE TAPE'S MACHIN STATEMENTS "
+                        "CHANGE THE OPTIONS)",
+                        record.where,
+                    )
+                )
+        else:
+            raise InputError(
+                f"{record.major} in a PTONLY/2 deck, which holds PTONLY/2, MACHIN and FINI only",
+                record.where,
+            )
+    if not mode_seen:
+        raise InputError("a PTONLY/2 deck must begin with PTONLY/2")
+    return (chosen.number if chosen is not None else None), notes
 
 
 def resolve_machine(
@@ -187,7 +251,10 @@ def apply_machin_options(
         if modifier == OFF:
             continue  # no option: the run ends the machine's section (option 218)
         if modifier == "PLAN":
-            raise NotYetSupported("MACHIN/...,PLAN (the GEPLAD planning pre-pass)")
+            plan_note = _plan(machine, changes, request)
+            if plan_note is not None:
+                notes.append(plan_note)
+            continue
         changes[28] = 0.0 if modifier == "LINEAR" else 1.0
     if not changes:
         return machine, notes
@@ -202,6 +269,31 @@ def apply_machin_options(
             position,
         )
     return changed, notes
+
+
+def _plan(
+    machine: MachineDefinition, changes: dict[int, OptionValue], request: MachinRequest
+) -> Diagnostic | None:
+    """The PLAN modifier: GEMON calls GEPLAD "if the modifier PLAN is given in the MACHIN
+    statement and option 1 is + 1" (001 L473-476, IGEFLG L17369-17375), option 1 as this
+    MACHIN leaves it. Otherwise PLAN asks for nothing and is said to be ignored. With option
+    1 = +1 the pass would "redevelop a new CL tape", but what it plans is not in the manual:
+    it points to "Section 4.10 on GEPLAD" and §4.10 is the dwell section (001 L16296), so the
+    run stops as not yet supported rather than post a tape that was not planned."""
+    option_1 = changes.get(1, machine.option(1))
+    where = request.where
+    if option_1 != 1.0:
+        return Diagnostic(
+            f"MACHIN/GECENT,...,PLAN IGNORED: OPTION 1 = {float(option_1):g}, NOT +1; "
+            "GEPLAD PLANS ONLY FOR POSITIONING MACHINES",
+            where,
+        )
+    raise NotYetSupported(
+        "MACHIN/...,PLAN on a positioning machine (option 1 = +1): the GEPLAD planning "
+        "pre-pass that redevelops the CL tape; the manual does not describe what it plans "
+        "(its 'Section 4.10 on GEPLAD' is the dwell section); post without PLAN",
+        where,
+    )
 
 
 def _class_change_refused(machine: MachineDefinition, value: float) -> str | None:
@@ -232,5 +324,6 @@ __all__ = [
     "first_machin",
     "is_machin_off",
     "parse_machin",
+    "ptonly_deck",
     "resolve_machine",
 ]

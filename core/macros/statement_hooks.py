@@ -173,6 +173,11 @@ def cycle_statement(run: MacroHost, statement: Statement) -> None:
     if engine.hooks.macfun(
         HookPoint.CYCLE, record=statement, values=statement.numbers(), words=statement.words()
     ):
+        if "OFF" in statement.words():
+            # the MACFUN ends the cycle on the tape; the run's cycle in force ends with it, or
+            # the points after CYCLE/OFF would still be drilled
+            run.cycle = None
+            run.cycle_first_z = None
         return
     run.builtin_statement("CYCLE")(run, statement)
 

@@ -31,18 +31,19 @@ from gecent.core.cl.records import Circle, Motion, MotionSubtype
 from gecent.core.errors import Diagnostic, FatalError, InputError, NotYetSupported
 from gecent.core.machine.shuffle import cell_map
 from gecent.core.motion.guard import check_segments
+from gecent.core.motion.quadrants import (
+    arc_sweep,
+    goes_linear,
+    quadrant_crossings,
+)
 from gecent.core.motion.rounding import round_to_step, to_steps
+from gecent.core.motion.sfm import arc_cuts, surface_cuts
 from gecent.core.output.block import Block, Code
 from gecent.core.output.modern import CL_PLANES, machine_planes
 from gecent.core.state import PostState
 
 PLANES = CL_PLANES  # IPLANE 0 = XY, 1 = ZX, 2 = YZ
 # where an arc leaves quadrant q, as (du, dv) on the unit circle
-LEAVE_CCLW = {1: (0, 1), 2: (-1, 0), 3: (0, -1), 4: (1, 0)}
-LEAVE_CLW = {1: (1, 0), 2: (0, 1), 3: (-1, 0), 4: (0, -1)}
-# an arc whose end is within this many steps of its start is a full circle; a longer one
-# whose end rounds onto the start is a short arc, no move (docs/decisions.md)
-FULL_CIRCLE = 0.01
 NEAR = 0.95  # a whole arc's centre stays this many steps from the record's on each axis
 PLANE_CODES = (18, 19, 20)  # TABLEG: XY, ZX, YZ plane selection (001 L5124-5133)
 
@@ -144,8 +145,10 @@ class CircularMotion:
             raise NotYetSupported("a circle about an axis along none of X, Y, Z", record.where)
         if self.state.feed.rapid_ipm:
             return False  # a rapid move is never an arc (decision, PROCQD reads FRAPID)
-        if self.state.sfm.active:
-            raise NotYetSupported("SFM on circles (SFMCIR, OFFARC)", record.where)
+        if self.state.sfm.active and self.whole:
+            # SFM cuts an arc into pieces; a control taking whole arcs (option 253) would
+            # need each piece as an arc of its own with option 252's centre words
+            raise NotYetSupported("SFM on a circle in one block (option 253)", record.where)
         points = [p[:3] for p in record.points]
         u, v, normal = PLANES[self.plane]
         if self.machine.number_option(28) != 1:
@@ -235,6 +238,10 @@ class CircularMotion:
         code = Code(int((10 + self.plane) * (-1 if ccw else 1)))
         try:
             if self.chord_tolerance > 0 or (arc.helix and not self.helical):
+                if self.state.sfm.active:
+                    raise NotYetSupported(
+                        "SFM on an arc cut into chords (option 262, a helix)", arc.record.where
+                    )
                 self._chords(arc, first, last)
                 return
             self._plane_block(arc.record)
@@ -242,7 +249,10 @@ class CircularMotion:
                 self._whole(arc, code, first, last)
                 return
             for index, corner in enumerate(points):
-                self._segment(arc, corner, code, index, len(points), points)
+                if self.state.sfm.active:
+                    self._surface_segment(arc, corner, code, index, len(points), points)
+                else:
+                    self._segment(arc, corner, code, index, len(points), points)
         except FatalError as error:
             # the arc goes out when the record after it arrives: the error is the arc's
             if error.where is None:
@@ -277,6 +287,59 @@ class CircularMotion:
                 place[normal] = arc.start[normal] + rise * index / count
                 point = (place[0], place[1], place[2])
             self._line(arc.record, point)
+
+    def _surface_segment(
+        self,
+        arc: Arc,
+        corner: tuple[float, float, float],
+        code: Code,
+        index: int,
+        count: int,
+        points: list[tuple[float, float, float]],
+    ) -> None:
+        """SFMCIR = 1 (001 L5152-5163): PROCQD's special tests are made on the quadrant
+        segment first; then SFMO cuts it at the shift radii, along the arc (each piece a
+        circular block whose I, J, K OFFARC takes from the piece's start) or, when the
+        segment goes linear, along its chord. A piece with a zero in-plane departure goes
+        linear as such a segment would (docs/decisions.md)."""
+        position = self.state.position
+        sfm = self.state.sfm
+        driver = sfm.driver
+        assert driver is not None, "SFM mode without its spindle"
+        u, v, _ = PLANES[self.plane]
+        step = self.step
+        start = tuple(position.previous[:3])
+        end = tuple(to_steps(value, step) for value in corner)
+        c = self.centre_moved
+        before = points[index - 1] if index else arc.start
+        linear = goes_linear(
+            index,
+            count,
+            (end[u] - start[u], end[v] - start[v]),
+            (before[u] - c[u], before[v] - c[v]),
+            (arc.end[u] - c[u], arc.end[v] - c[v]),
+        )
+        inches = 1.0 / 25.4 if self.machine.number_option(138) == 1 else 1.0
+        arguments = (sfm.radius_axis, sfm.fixed_radius * inches, sfm.surface_feet)
+        if linear:
+            path = surface_cuts(start, end, *arguments, driver.ladder(), step * inches)
+        else:
+            centre = tuple(value / step for value in c)
+            radius = arc.radius / step
+            path = arc_cuts(
+                start, end, centre, radius, (u, v), *arguments, driver.ladder(), step * inches
+            )
+        sfm.last_end = int(path.ends[-1] or 0) if path.ends else 0
+        where, number = arc.record.where, arc.record.number
+        for cut in path.cuts:
+            if cut.speed is not None:
+                driver.turn(cut.speed, where, number)
+            point = corner if cut.point == end else tuple(k * step for k in cut.point)
+            flat = cut.point[u] == position.previous[u] or cut.point[v] == position.previous[v]
+            if linear or flat:
+                self._line(arc.record, (point[0], point[1], point[2]))
+            else:
+                self._segment(arc, (point[0], point[1], point[2]), code, index, count, points)
 
     def _line(self, record: Motion, point: tuple[float, float, float]) -> None:
         position = self.state.position
@@ -472,74 +535,3 @@ class CircularMotion:
             if cross:
                 return cross < 0
         return None
-
-
-def arc_sweep(
-    first: tuple[float, float], last: tuple[float, float], clockwise: bool, step: float
-) -> float:
-    """The angle an arc turns from ``first`` to ``last`` (offsets from the centre) in its
-    sense; an arc that ends where it began (within FULL_CIRCLE steps) is a full circle."""
-    if hypot(last[0] - first[0], last[1] - first[1]) <= FULL_CIRCLE * step:
-        return tau  # back where it started: a full circle (no CL arc has no length)
-    turn = atan2(last[1], last[0]) - atan2(first[1], first[0])
-    return (-turn if clockwise else turn) % tau
-
-
-def quadrant_crossings(
-    first: tuple[float, float], last: tuple[float, float], clockwise: bool
-) -> list[tuple[int, int]]:
-    """QUADNT and QUADET (001 L4850-5100): the axis crossings, as (du, dv) on the unit
-    circle, of an arc from ``first`` to ``last`` (offsets from its centre) in path order;
-    an arc that starts and ends in one quadrant with the end behind the start goes round."""
-    ccw = not clockwise
-    entered = _quadrant(first, ccw, first_point=True)
-    left = _quadrant(last, ccw, first_point=False)
-    crossings = (left - entered) % 4 if ccw else (entered - left) % 4
-    if crossings == 0 and _long_way(first, last, ccw):
-        crossings = 4
-    leave = LEAVE_CCLW if ccw else LEAVE_CLW
-    out: list[tuple[int, int]] = []
-    quadrant = entered
-    for _ in range(crossings):
-        out.append(leave[quadrant])
-        quadrant = quadrant % 4 + 1 if ccw else (quadrant + 2) % 4 + 1
-    return out
-
-
-def goes_linear(
-    index: int,
-    count: int,
-    departures: tuple[int, int],
-    before: tuple[float, float],
-    end: tuple[float, float],
-) -> bool:
-    """PROCQD's special cases (001 L5214-5383): the first or last of ``count`` quadrant
-    segments with a zero in-plane departure (steps), or a last segment whose end looks
-    behind its start (``before`` and ``end``: offsets from the centre), goes out linear."""
-    if index in (0, count - 1) and (departures[0] == 0 or departures[1] == 0):
-        return True  # zero departure at the start or end (001 L5284-5293)
-    if index == count - 1 and count >= 2:
-        axis = 0 if abs(before[0]) > abs(before[1]) else 1
-        if abs(end[axis]) >= abs(before[axis]):
-            return True  # apparent reversal at the end point (001 L5355-5383)
-    return False
-
-
-def _quadrant(point: tuple[float, float], ccw: bool, *, first_point: bool) -> int:
-    """QUADNT (001 L4883-4930): a point on an axis belongs to the quadrant the arc enters
-    next (first point) or last passed through (last point)."""
-    pu, pv = point
-    if pu and pv:
-        if pu > 0:
-            return 1 if pv > 0 else 4
-        return 2 if pv > 0 else 3
-    turn = 0 if pu > 0 else 1 if pv > 0 else 2 if pu < 0 else 3
-    if first_point:
-        return turn % 4 + 1 if ccw else (turn - 1) % 4 + 1
-    return (turn - 1) % 4 + 1 if ccw else turn % 4 + 1
-
-
-def _long_way(first: tuple[float, float], last: tuple[float, float], ccw: bool) -> bool:
-    """Start and end in one quadrant with the end behind the start: nearly a full circle."""
-    cross = first[0] * last[1] - last[0] * first[1]
-    return cross <= 0 if ccw else cross >= 0

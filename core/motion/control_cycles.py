@@ -20,13 +20,19 @@ The cycles that dwell are the ones whose TABLEG function dwells: FACE (G82, and 
 a DWELL), BORE,DWELL (TABLEG 94, G89), BORE,DWELL,DRAG (93, LinuxCNC's G86 with P) and
 BORE,DWELL,MANUAL (95, LinuxCNC's G88 with P) (001 L22877-22977). OUT and IN, a quill's
 forward and back, have no G-code control counterpart.
+
+What the control's cycle cannot drill (:func:`ControlCycles.unfit` names why: OUT and IN, a
+RETURN level other than R or the start, a DWELL on a cycle whose G code takes no P, a form
+whose G code the machine file leaves out, a left-hand tap, a missing R, Q or G98/G99) is
+drilled by moves instead, as on a contouring machine whose control has no cycles
+(core/motion/cycles.py), with a warning naming the reason.
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable
 
-from gecent.core.errors import NotYetSupported, SourcePosition
+from gecent.core.errors import NotYetSupported
 from gecent.core.motion.cycles import CYCLE_TYPES, Cycle
 from gecent.core.motion.rounding import to_steps
 from gecent.core.output.block import Block, Code
@@ -58,36 +64,33 @@ class ControlCycles:
         self.return_code: float | None = None
         self.words: tuple[float, float] | None = None  # the Z and R in force
 
-    def check(self, cycle: Cycle, where: SourcePosition) -> None:
-        """What the control's cycle cannot do stops the run at the CYCLE statement."""
+    def unfit(self, cycle: Cycle, spindle_direction: int) -> str | None:
+        """Why the control's own cycle cannot drill ``cycle``, or None when it can; the
+        cycle is then drilled by moves (cycle.py). ``spindle_direction``: the spindle's at
+        the CYCLE statement (-1 CCLW)."""
         machine = self.machine
+        if cycle.kind in ("OUT", "IN"):
+            return f"CYCLE/{cycle.kind} HAS NO G-CODE CONTROL CYCLE"
         if cycle.return_level not in (None, 0.0):
-            raise NotYetSupported(
-                "CYCLE RETURN to a level other than the start (0) by the control's cycle",
-                where,
-            )
+            return "THE CONTROL RETURNS TO R OR TO THE START LEVEL ONLY (G99, G98)"
         location = RETURN_R_PLANE if cycle.return_level is None else RETURN_INITIAL
         if machine.g_code(location) is None:
-            raise NotYetSupported(f"a control cycle without its return code TABLEG({location})")
-        if cycle.kind == "DEEP" and cycle.step and machine.registers.formats[21] is None:
-            raise NotYetSupported("CYCLE/DEEP's step without a Q register (REGFOR 21)", where)
+            return f"NO RETURN CODE TABLEG({location})"
         if machine.registers.formats[R_REGISTER] is None:
-            raise NotYetSupported("a control cycle without an R register (REGFOR 16)", where)
-        if cycle.kind in ("OUT", "IN"):
-            raise NotYetSupported(f"CYCLE/{cycle.kind} by the control's cycle", where)
+            return f"NO R REGISTER (REGFOR {R_REGISTER})"
+        if cycle.kind == "DEEP" and machine.registers.formats[PECK_REGISTER] is None:
+            return f"NO PECK REGISTER Q (REGFOR {PECK_REGISTER})"
         if cycle.dwell and not dwells(cycle.kind) and cycle.kind != "DRILL":
             # G82 and the BORE,DWELL forms dwell; G81 and G83-G85 take no P
-            raise NotYetSupported(f"CYCLE/{cycle.kind} with DWELL by the control's cycle", where)
+            return f"THE CONTROL'S CYCLE FOR {cycle.kind} TAKES NO DWELL"
         cell = CYCLE_TYPES[control_kind(cycle)][1]
         if machine.g_code(cell) is None:
             # a control that bores (TABLEG 86) but whose file leaves out this form of it
-            words = cycle.kind.split(",")
-            with_ = " and ".join(words[1:]) or "DWELL"
-            raise NotYetSupported(
-                f"CYCLE/{words[0]} with {with_} by the control's cycle without its G code "
-                f"TABLEG({cell})",
-                where,
-            )
+            return f"NO G CODE TABLEG({cell}) FOR {control_kind(cycle)}"
+        if cycle.kind == "TAP" and spindle_direction < 0:
+            # G84 taps right-handed (M03): a left-hand tap is G74, which no TABLEG names
+            return "A LEFT-HAND TAP (SPINDLE CCLW) HAS NO TABLEG CODE"
+        return None
 
     def hole(
         self,
@@ -101,9 +104,11 @@ class ControlCycles:
         ``levels`` (R plane, bottom, return level) replace the cycle's own (a cycle macro's
         $P11, $P13, $P15)."""
         if cycle.kind == "TAP" and self.state.spindle.direction < 0:
-            # G84 taps right-handed (M03): a left-hand tap is G74, which no TABLEG names yet
+            # G84 taps right-handed (M03): a left-hand tap is G74, which no TABLEG names yet;
+            # a spindle CCLW at the CYCLE statement has the tap drilled by moves (unfit)
             raise NotYetSupported(
-                "CYCLE/TAP with the spindle CCLW (a left-hand tap, G74) by the control's cycle"
+                "CYCLE/TAP with the spindle turned CCLW after the CYCLE statement (a "
+                "left-hand tap, G74) by the control's cycle"
             )
         position = self.state.position
         tx, ty, _ = position.translation
@@ -112,7 +117,7 @@ class ControlCycles:
         machine = self.machine
         location = RETURN_R_PLANE if cycle.return_level is None else RETURN_INITIAL
         code = machine.g_code(location)
-        assert code is not None  # check() made sure
+        assert code is not None  # unfit() made sure
         if code != self.return_code:  # G98/G99 is modal: output when it changes
             g_block = Block(Code.G_ONLY, record)
             g_block.cells[2] = code

@@ -12,7 +12,8 @@ lathe (MACH04), always from the CL axis's positive side, where the tool stands:
 3. feed to top - DEPTH (DEEP: pecks of STEP counted from the top, each from R and back to R);
 4. FACE (and a DWELL given): a dwell at the bottom;
 5. back to R, or to the RETURN level: at rapid, or at feed for BORE and BORE,DWELL; TAP
-   reverses the spindle (TABLEM(5)) for the way out and restores it (TABLEM(4)).
+   reverses the spindle for the way out (TABLEM(5), or TABLEM(4) for a left-hand tap with
+   the spindle CCLW) and restores it.
 
 The BORE forms of TABLEG 91-95 (001 L22895-22977): DRAG stops the spindle (TABLEM(6)) and
 comes out at rapid; MANUAL stops the spindle and the program (TABLEM(1)) so the operator can
@@ -58,6 +59,8 @@ BORE_WAYS_OUT = ("DRAG", "MANUAL")  # BORE's modifiers besides DWELL (ICYTYP 10-
 # INHIBT has no text in the manual (CYCLGP's word list only, 001 L30126): read as OFF
 INHIBITED = "CYCLE/INHIBT IS PROCESSED AS CYCLE/OFF: THE CYCLE IS SUSPENDED"
 SPINDLE_OFF, PROGRAM_STOP = 6, 1  # TABLEM cells of DRAG's and MANUAL's stops
+SPINDLE_CLW, SPINDLE_CCLW = 4, 5  # TABLEM cells of the spindle's two directions
+ACROSS_TOLERANCE = 1e-9  # a hole this near across is where the tool stands
 
 
 @dataclass(frozen=True, slots=True)
@@ -71,7 +74,7 @@ class Cycle:
     dwell: float = 0.0  # seconds at the bottom (FACE, DWELL)
     feed: tuple[float, Word | None] | None = None  # the cycle feed and its unit word
     axis: int = 2  # the CL axis drilled along (the machine's spindle axis, option 59)
-    restart_cell: int = 4  # TABLEM cell that starts the spindle again after DRAG, MANUAL
+    restart_cell: int = 4  # TABLEM cell the spindle turns by (again after DRAG, MANUAL, TAP)
 
 
 def parse_cycle(
@@ -218,6 +221,10 @@ def cycle_legs(
     def across(point: tuple[float, float, float]) -> tuple[float, ...]:
         return point[:axis] + point[axis + 1 :]
 
+    def apart(a: tuple[float, float, float], b: tuple[float, float, float]) -> bool:
+        # (a tilted hole's frame, multiaxis_cycles.py, leaves rounding noise across)
+        return any(abs(u - v) > ACROSS_TOLERANCE for u, v in zip(across(a), across(b), strict=True))
+
     top = hole[axis]
     plane = top + cycle.clearance - cycle.rapto
     bottom = top - cycle.depth
@@ -232,10 +239,10 @@ def cycle_legs(
     if way_out == "withdraw":
         level = max(at[axis], back)  # a withdrawal never goes deeper
         legs.append(Leg(on_axis(at, level), rapid=True))
-        if across(at) != across(hole):
+        if apart(at, hole):
             legs.append(Leg(on_axis(hole, level), rapid=True))
         return legs
-    if across(at) != across(hole):
+    if apart(at, hole):
         legs.append(Leg(on_axis(hole, at[axis]), rapid=True))
     legs.append(Leg(on_axis(hole, plane), rapid=True))
     if cycle.kind == "DEEP" and cycle.step:
@@ -252,8 +259,11 @@ def cycle_legs(
         if dwell:
             legs.append(Leg(at_bottom, rapid=False, dwell=dwell))
     elif way_out == "tap":
-        legs.append(Leg(out, rapid=False, m_code_cell=5, dwell=dwell))
-        legs.append(Leg(out, rapid=False, m_code_cell=4))
+        # out with the spindle reversed, then turning as it did: M04 then M03 for a
+        # right-hand tap, M03 then M04 for a left-hand one (the spindle CCLW)
+        reverse = SPINDLE_CLW + SPINDLE_CCLW - cycle.restart_cell
+        legs.append(Leg(out, rapid=False, m_code_cell=reverse, dwell=dwell))
+        legs.append(Leg(out, rapid=False, m_code_cell=cycle.restart_cell))
     elif way_out == "drag":
         # M05 goes with the way out: a control that stops the spindle at the end of the
         # block would turn it through the bore, which is only a plain way out, never a cut

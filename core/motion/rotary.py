@@ -11,6 +11,14 @@ so the table never drifts more than half a step (§3.4.5.3). An absolute system 
 positioning machines, core/motion/rotary_absolute.py) outputs the target, in two moves
 when the programmed direction is the long way round. Option 206 says which way a CLW turns
 a table; options 220 and 221 are the table's travel limits, warned about when passed.
+
+ROTATE/TABLE,OFF|CLW|CCLW,RPM,s,RANGE,n, a spinning table's speed (TABSPD), is in
+core/motion/rotary_devices.py. ROTATE/TORCH, INCR|ATANGL, angle [, CLW|CCLW] turns a flame
+cutter's torch (ROTORC, GEFLAM, 001 L36260-36302; option 132 = 4): its departure in the
+rotary register (DBFSEG 6, or the one there is), CODE +2, in option 118's units rounded to
+option 14's step with the difference carried (SRAREC), split equally when the register
+cannot hold it, and a warning once the torch has turned more than 360 degrees from where
+it started (its hoses wind up). docs/decisions.md (issue 22).
 """
 
 from __future__ import annotations
@@ -24,6 +32,7 @@ from gecent.core.cl.records import Statement, Word
 from gecent.core.errors import Diagnostic, InputError, NotYetSupported
 from gecent.core.machine.definition import ROTARY_CELLS, MachineDefinition
 from gecent.core.motion.gcode import RotaryCodes
+from gecent.core.motion.rotary_devices import TableOutput, TableSpeed, is_table_speed
 from gecent.core.motion.rounding import to_steps
 from gecent.core.motion.segments import segment_place
 from gecent.core.output.block import Block, Code
@@ -82,6 +91,9 @@ def rotary_move(
     return RotaryMove(target, travel)
 
 
+FLAME_CUTTER = 4  # option 132: the overlay GEFLAM, where ROTORC is
+TORCH_PAST_360 = "WARNING -- TORCH ROTATION HAS EXCEEDED 360 DEGREES -- WARNING."
+TORCH_SEGMENTED = "TORCH ROTATION IS TOO LARGE TO BE PUT IN A BLOCK WITHOUT SEGMENTATION."
 HALF_TURN_STEP = 179.0  # each forced move of a long way round (001 L5584-5592, W17)
 
 
@@ -155,8 +167,23 @@ class RotaryElement:
         # ROTABA on a positioning machine (core/motion/rotary_absolute.py), made by the
         # ROTATE handler on first use: it shares the positions
         self.absolute_system: RotarySystem | None = None
+        self.torch = TorchRotation()
+        self.table_speed = TableSpeed()
+        # TABSPD's dwells and M codes need the output element itself, of which the run
+        # hands this element only its OUTPUT (core/dispatch/elements.py)
+        owner = getattr(emit, "__self__", None)
+        self.table_output = owner if isinstance(owner, TableOutput) else None
 
     def statement(self, statement: Statement) -> None:
+        words = [a.name for a in statement.args if isinstance(a, Word)]
+        if words[:1] == ["TORCH"]:
+            self.torch.statement(statement, self.state.machine, self.emit, self.warn)
+            return
+        if is_table_speed(statement):
+            if self.table_output is None:
+                raise NotYetSupported("ROTATE/TABLE speed control without an output element")
+            self.table_speed.statement(statement, self.state.machine, self.table_output, self.warn)
+            return
         request = parse_rotate(statement, self.state.machine)
         cell, absolute, value, direction = (
             request.cell,
@@ -196,12 +223,95 @@ class RotaryElement:
             sign * move.travel * self.per_degree, self.maximum, self.step, self.carries[cell]
         )
         moves = [steps for steps in departures if steps != 0]
+        # RAPID before ROTATE: every block of the turn at the table's rapid (option 115);
+        # OUTPUT then drops the request (RAPFLG = 0, chart 8), so it is one shot
+        rapid = self.state.feed.rapid_requested
         for index, steps in enumerate(moves):
             block = Block(Code.ROTARY_INCREMENTAL, statement.number)
             block.cells[cell] = steps * self.step
             block.rotary = (cell, abs(steps * self.step) / self.per_degree)
             block.segment = segment_place(index, len(moves))
+            block.rapid = rapid
             self.emit(block)
+
+
+class TorchRotation:
+    """ROTORC: the torch's turns, counted from where it started (degrees, + = CLW), and the
+    rounding difference carried from one block to the next."""
+
+    def __init__(self) -> None:
+        self.turned = 0.0
+        self.carry = 0.0
+
+    def statement(
+        self,
+        statement: Statement,
+        machine: MachineDefinition,
+        emit: Callable[[Block], None],
+        warn: Callable[[Diagnostic], None],
+    ) -> None:
+        if machine.number_option(132) != FLAME_CUTTER:
+            raise InputError(
+                "ROTATE/TORCH is a flame-cutter statement (ROTORC, overlay GEFLAM: option "
+                f"132 = 4); machine {machine.label} has option 132 = "
+                f"{machine.number_option(132):g}",
+                statement.where,
+            )
+        absolute, value, direction = _parse_torch(statement)
+        cell = _rotary_register(machine, HEAD_CELL, statement)
+        scaling = machine.number_option(118)
+        if scaling not in UNITS_PER_DEGREE:
+            raise NotYetSupported(f"rotary scaling option 118 = {scaling:g}", statement.where)
+        move = rotary_move(normalise(self.turned), value, absolute=absolute, direction=direction)
+        self.turned += move.travel
+        if abs(self.turned) > 360.0 + 1e-9:
+            warn(Diagnostic(TORCH_PAST_360, statement.where))
+        step = machine.number_option(14)
+        register = machine.registers.formats[cell]
+        assert register is not None
+        # the largest departure the register holds, less a step for the carried correction
+        largest = register.largest - step
+        departures, self.carry = carried_departures(
+            move.travel * UNITS_PER_DEGREE[scaling], largest, step, self.carry
+        )
+        moves = [steps for steps in departures if steps != 0]
+        if len(departures) > 1:
+            warn(Diagnostic(TORCH_SEGMENTED, statement.where))
+        for index, steps in enumerate(moves):
+            block = Block(Code.ROTARY_ABSOLUTE, statement.number)  # CODE +2 (001 L36280)
+            block.cells[cell] = steps * step
+            block.segment = segment_place(index, len(moves))
+            emit(block)
+
+
+def _parse_torch(statement: Statement) -> tuple[bool, float, int | None]:
+    """ROTATE/TORCH, INCR | ATANGL, angle [, CLW | CCLW]: ROTABL's form for the torch."""
+    words = [a.name for a in statement.args if isinstance(a, Word)]
+    numbers = statement.numbers()
+    modes = [w for w in words if w in ("INCR", "ATANGL")]
+    directions = [w for w in words if w in ("CLW", "CCLW")]
+    if len(modes) != 1 or len(numbers) != 1 or len(modes) + len(directions) != len(words) - 1:
+        raise InputError(
+            "ROTATE/TORCH expects INCR or ATANGL, one angle and at most one of CLW, CCLW",
+            statement.where,
+        )
+    if len(directions) > 1:
+        raise InputError("ROTATE/TORCH takes at most one of CLW, CCLW", statement.where)
+    direction = None if not directions else (CLW if directions[0] == "CLW" else CCLW)
+    return modes[0] == "ATANGL", numbers[0], direction
+
+
+def _rotary_register(machine: MachineDefinition, cell: int, statement: Statement) -> int:
+    """The device's DBFSEG cell, or the machine's one rotary register (001 L1793-1796)."""
+    if machine.registers.formats[cell] is not None:
+        return cell
+    other = TABLE_CELL if cell == HEAD_CELL else HEAD_CELL
+    if machine.registers.formats[other] is None:
+        raise InputError(
+            f"ROTATE: machine {machine.label} has no rotary register (DBFSEG 6 or 7)",
+            statement.where,
+        )
+    return other
 
 
 @dataclass(frozen=True, slots=True)

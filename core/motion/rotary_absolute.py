@@ -22,19 +22,22 @@ from collections.abc import Callable
 from dataclasses import dataclass
 
 from gecent.core.absent import ABSENT
-from gecent.core.cl.records import Statement
+from gecent.core.cl.records import Statement, Word
 from gecent.core.errors import Diagnostic, InputError, MachineDefinitionError, NotYetSupported
 from gecent.core.feed.positioning import FeedContext, FeedType
 from gecent.core.machine.definition import MachineDefinition
+from gecent.core.motion.positioning import set12
 from gecent.core.motion.rotary import (
     HEAD_CELL,
     TABLE_CELL,
     UNITS_PER_DEGREE,
+    TorchRotation,
     long_way_targets,
     parse_rotate,
     rotary_move,
     travel_limit_warning,
 )
+from gecent.core.motion.rotary_devices import checked_table_speed, is_table_speed
 from gecent.core.motion.rounding import to_steps
 from gecent.core.output.block import Block, Code
 from gecent.core.state import PostState
@@ -103,10 +106,17 @@ class AbsoluteRotary:
         self.radius = machine.number_option(112)
         self.rapid_rpm = machine.number_option(115)
         cycle_off = machine.g_code(1)
-        self.g_code = ABSENT if cycle_off is None else float(cycle_off)
+        self.cycle_off = ABSENT if cycle_off is None else float(cycle_off)
         self.cut_minutes = 0.0  # the table's moves, added by the caller to the run's CUTIME
+        self.torch = TorchRotation()
 
     def statement(self, statement: Statement) -> None:
+        words = [a.name for a in statement.args if isinstance(a, Word)]
+        if words[:1] == ["TORCH"]:
+            self.torch.statement(statement, self.state.machine, self.emit, self.warn)
+            return
+        if is_table_speed(statement):
+            checked_table_speed(statement, self.state.machine)  # refused: overlay GEMILL
         request = parse_rotate(statement, self.state.machine)
         cell = _register(self.state.machine, request.cell, statement)
         previous = self.positions[cell]
@@ -131,11 +141,14 @@ class AbsoluteRotary:
         if rapid and machine.m_code(RAPID_TABLE) is not None:
             self.store_m(machine.m_code(RAPID_TABLE))  # type: ignore[arg-type]
         ipm = self.rapid_ipm() if rapid else self._feed_ipm(statement)
+        # SET12 (001 L35892-35937, L5612-5614): the positioning mode's G code, else TABLEG(1)
+        mode_g = set12(self.state, statement.where)
+        g_code = self.cycle_off if mode_g is None else mode_g
         part = abs(move.travel) / len(targets) if targets else 0.0
         direction = 1.0 if move.travel >= 0 else -1.0
         for index, target in enumerate(targets):
             block = Block(Code.ROTARY_ABSOLUTE, statement.number)
-            block.cells[2] = self.g_code
+            block.cells[2] = g_code
             units = to_steps(target * self.per_degree, self.step) * self.step
             block.cells[cell] = direction * abs(units) if self.signed else units
             block.rapid = rapid

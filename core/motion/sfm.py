@@ -30,10 +30,10 @@ speed and, in IPR mode, the matching IPM feed.
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from enum import IntEnum
-from math import inf, pi
+from math import atan2, cos, inf, pi, sin
 
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.motion.ladder import SpeedLadder
@@ -263,6 +263,106 @@ def _between(start: tuple[int, ...], end: tuple[int, ...], fraction: float) -> t
     """The point ``fraction`` of the way from start to end, rounded to whole steps as
     SRAREC rounds a CL point."""
     return tuple(to_steps(a + fraction * (b - a), 1.0) for a, b in zip(start, end, strict=True))
+
+
+def arc_cuts(
+    start: Sequence[int],
+    end: Sequence[int],
+    centre: Sequence[float],
+    radius: float,
+    plane: tuple[int, int],
+    radius_axis: int | None,
+    fixed_radius: float,
+    surface_feet: float,
+    ladder: SpeedLadder,
+    inches_per_step: float,
+) -> SurfacePath:
+    """SFMO over one quadrant segment of a circle (SFMCIR = 1: PROCQD hands each to SFMO
+    after its special tests, 001 L5152-5163, L37415-37475): the arc from ``start`` to
+    ``end`` (steps) about ``centre`` (steps) with ``radius`` (steps) in the plane ``(u, v)``,
+    within one quadrant so that both plane coordinates run one way along it. The speeds
+    are planned as on a line, from the radius coordinate at the two ends; each shift
+    radius becomes the point of the arc where the coordinate has that value, rounded to
+    the step grid. A radius along the plane's normal (or a fixed radius) is constant over
+    the arc: one piece."""
+    begin, finish = tuple(start), tuple(end)
+    u, v = plane
+    if radius_axis is None or radius_axis not in plane:
+        if radius_axis is None:
+            constant = fixed_radius
+        else:
+            constant = abs(begin[radius_axis]) * inches_per_step
+        fixed = plan(surface_feet, constant, constant, ladder)
+        speed = fixed.pieces[0].speed if fixed.pieces else None
+        return SurfacePath((Cut(finish, speed),), (fixed.end,))
+    first_angle = atan2(begin[v] - centre[v], begin[u] - centre[u])
+    turn = (atan2(finish[v] - centre[v], finish[u] - centre[u]) - first_angle + pi) % (2 * pi)
+    turn -= pi  # the shorter way round: a quadrant segment turns at most a quarter
+
+    def at(fraction: float) -> tuple[int, ...]:
+        angle = first_angle + fraction * turn
+        point = list(begin)
+        point[u] = to_steps(centre[u] + radius * cos(angle), 1.0)
+        point[v] = to_steps(centre[v] + radius * sin(angle), 1.0)
+        return tuple(point)
+
+    def coordinate(fraction: float) -> float:
+        angle = first_angle + fraction * turn
+        if radius_axis == u:
+            return centre[u] + radius * cos(angle)
+        return centre[v] + radius * sin(angle)
+
+    stretches = [(0.0, 1.0, begin, finish)]
+    a, b = begin[radius_axis], finish[radius_axis]
+    if a * b < 0:  # across the centre line: |coordinate| turns there
+        middle = _fraction_where(coordinate, 0.0, 0.0, 1.0)
+        crossing = at(middle)
+        stretches = [(0.0, middle, begin, crossing), (middle, 1.0, crossing, finish)]
+    cuts: list[Cut] = []
+    ends: list[EndCondition | None] = []
+    reached = begin
+    for low, high, first, last in stretches:
+        if first == last:
+            continue
+        c0, c1 = first[radius_axis], last[radius_axis]
+        stretch = plan(surface_feet, abs(c0) * inches_per_step, abs(c1) * inches_per_step, ladder)
+        ends.append(stretch.end)
+        if not stretch.pieces:
+            cuts.append(Cut(last, None))
+            reached = last
+            continue
+        side = 1 if c0 + c1 > 0 else -1
+        for piece in stretch.pieces:
+            if piece.until is None:
+                point = last
+            else:
+                target = side * piece.until / inches_per_step
+                point = at(_fraction_where(coordinate, target, low, high))
+            if point == reached:
+                continue  # the shift rounds onto the previous point: no move, no piece
+            cuts.append(Cut(point, piece.speed))
+            reached = point
+    return SurfacePath(tuple(cuts), tuple(ends))
+
+
+def _fraction_where(
+    coordinate: Callable[[float], float], target: float, low: float, high: float
+) -> float:
+    """Where between ``low`` and ``high`` a coordinate that runs one way along the arc
+    takes the value ``target`` (bisection); the nearer end when it never does (a shift
+    radius the rounded end points put just outside the arc)."""
+    rising = coordinate(high) >= coordinate(low)
+    if (target <= coordinate(low)) == rising:
+        return low
+    if (target >= coordinate(high)) == rising:
+        return high
+    for _ in range(60):
+        middle = (low + high) / 2
+        if (coordinate(middle) < target) == rising:
+            low = middle
+        else:
+            high = middle
+    return (low + high) / 2
 
 
 def range_feed_limits(machine: MachineDefinition, feed_range: int) -> tuple[float, float]:

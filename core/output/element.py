@@ -19,7 +19,7 @@ from gecent.core.feed.contour import FeedCommand, RapidCommand
 from gecent.core.feed.limits import FeedLimits
 from gecent.core.feed.optimise import FeedOptimiser
 from gecent.core.feed.positioning import FeedType
-from gecent.core.machine.definition import ROTARY_CELLS
+from gecent.core.motion.cycles import CYCLE_TYPES
 from gecent.core.motion.gcode import (
     CircularCodes,
     DimensionCode,
@@ -31,6 +31,34 @@ from gecent.core.motion.limits import SlideLimits
 from gecent.core.motion.linear import TWO_AXIS
 from gecent.core.motion.rotary import UNITS_PER_DEGREE
 from gecent.core.output.block import Block, Code
+from gecent.core.output.codes import (
+    ABSOLUTE_CODES as ABSOLUTE_CODES,
+)
+from gecent.core.output.codes import (
+    CIRCLE_CODES as CIRCLE_CODES,
+)
+from gecent.core.output.codes import (
+    G_FILLED as G_FILLED,
+)
+from gecent.core.output.codes import (
+    MOTION_CODES as MOTION_CODES,
+)
+from gecent.core.output.codes import (
+    MOVING_CODES as MOVING_CODES,
+)
+from gecent.core.output.codes import (
+    PLACED_CODES as PLACED_CODES,
+)
+from gecent.core.output.codes import (
+    POSITION_CODES as POSITION_CODES,
+)
+from gecent.core.output.codes import (
+    THREAD_CODES as THREAD_CODES,
+)
+from gecent.core.output.codes import (
+    UNSHUFFLED as UNSHUFFLED,
+)
+from gecent.core.output.dwells import Dwells
 from gecent.core.output.marks import stand_in
 from gecent.core.output.modern import (
     CL_PLANES,
@@ -46,35 +74,15 @@ from gecent.core.output.program import ModernProgram
 from gecent.core.output.words import Word, WordFormatter
 from gecent.core.state import SPINDLE_COMMAND, PostState
 
-CIRCLE_CODES = frozenset(
-    {
-        Code.CIRCLE_XY_CLW,
-        Code.CIRCLE_XY_CCLW,
-        Code.CIRCLE_ZX_CLW,
-        Code.CIRCLE_ZX_CCLW,
-        Code.CIRCLE_YZ_CLW,
-        Code.CIRCLE_YZ_CCLW,
-    }
-)
-MOTION_CODES = frozenset({Code.LINEAR}) | CIRCLE_CODES
-POSITION_CODES = frozenset({Code.POSITION_XY, Code.POSITION_Z})
-THREAD_CODES = frozenset({Code.THREAD_5, Code.THREAD_6})
-# blocks that move the tool (their G and F are modal) and blocks of absolute positions
-MOVING_CODES = MOTION_CODES | POSITION_CODES | {Code.ROTARY_INCREMENTAL, Code.CYCLE}
-ABSOLUTE_CODES = POSITION_CODES | {Code.CYCLE}
-# blocks whose absolute positions replace their departures under option 251 = 1
-PLACED_CODES = MOTION_CODES | THREAD_CODES
-# blocks whose cells 3..10 are registers already, not internal axes for SHUFFL
-UNSHUFFLED = frozenset({Code.DWELL})
-# numeric blocks that get TABLEG(5) when they have no G and option 38 = +-1 (001 L24890-24907)
-G_FILLED = frozenset({Code.NONMOTION, Code.AUX_ONLY, Code.END, Code.DWELL})
 # comment 22 (001 L29355-29358): a TABLEM code the machine does not have
 NOT_AVAILABLE = "REQUESTED MISCELLANEOUS FUNCTION CODE IS NOT AVAILABLE ON THIS MACHINE"
 # non-motion blocks that may carry an option-98 F or an option-148 dwell (001 L9204-9258)
 NON_MOTION_DWELL = frozenset({Code.NONMOTION, Code.G_ONLY, Code.END})
+# option 1 = 2: a TOOLNO or SPINDL with no positioning move after it before the END
+NO_MOVE_FOR_S_T = "NO MOTION BLOCK FOLLOWED THE LAST SPINDL OR TOOLNO: ITS S OR T IS NOT OUTPUT"
 
 
-class OutputElement(ModernProgram, OtherBlocks):
+class OutputElement(ModernProgram, OtherBlocks, Dwells):
     def __init__(self, state: PostState) -> None:
         machine = state.machine
         self.state = state
@@ -98,8 +106,16 @@ class OutputElement(ModernProgram, OtherBlocks):
         )
         per_degree = UNITS_PER_DEGREE.get(machine.number_option(118), 1.0)
         self.rotary_codes = RotaryCodes(machine, machine.number_option(111) * per_degree)
-        # option 38 = +-1: blocks without a G get TABLEG(5) (001 L24890-24907)
+        # option 38 = +-1: blocks without a G get TABLEG(5) (001 L24890-24907); -1: the
+        # current cycle G code instead, the cycle-off TABLEG(1) until a cycle G is output
         self.fill_g = self.dwell_g if machine.number_option(38) in (1.0, -1.0) else ABSENT
+        self.cycle_g_codes: frozenset[float] = frozenset()
+        if machine.number_option(38) == -1.0:
+            cells = [1, *(cell for _, cell in CYCLE_TYPES.values())]
+            codes = [code for cell in cells if (code := machine.g_code(cell)) is not None]
+            self.cycle_g_codes = frozenset(float(code) for code in codes)
+            cycle_off = machine.g_code(1)
+            self.fill_g = self.fill_g if cycle_off is None else float(cycle_off)
         self.tmark_code = stand_in(machine, 65)
         n_format = machine.registers.formats[1]
         # SEQLIM: the largest N the format holds (999 for format 30)
@@ -113,8 +129,12 @@ class OutputElement(ModernProgram, OtherBlocks):
         # a positioning machine's feed type (option 78), set by the run; CYCLE/MILL in force
         self.positioning_feed: FeedType | None = None
         self.milling = False
-        # option 1 = 1: a positioning block with a T repeats the spindle command (-1: not)
-        self.merge_s_with_t = machine.number_option(1) == 1
+        # option 1 = 1: a positioning block with a T repeats the spindle command (-1: not;
+        # 2: as 1, in the motion block that takes the T)
+        self.merge_s_with_t = machine.number_option(1) in (1.0, 2.0)
+        # option 1 = 2: the S and T wait for the next motion block (001 L24332-24358)
+        self.merge_into_motion = machine.number_option(1) == 2
+        self.repeats_suppressed = machine.number_option(40) == 1
         axes = 2 if machine.number_option(22) in TWO_AXIS else 3
         self.modern = ModernControl(machine, self.step, axes)
         # options 252 != 0: G02/G03 in the machine's plane, mirrored by SHUFFL's signs
@@ -170,6 +190,8 @@ class OutputElement(ModernProgram, OtherBlocks):
 
     def _output(self, block: Block) -> None:
         state = self.state
+        if self.merge_into_motion and _spindle_block(block, state):
+            return  # SPINDL's own block under option 1 = 2: its S and M ride in the move
         if self.modern.frame and not self.modern.started:
             self._start_block(block.record)
         block.cells[15] = float(int(block.code))
@@ -212,8 +234,12 @@ class OutputElement(ModernProgram, OtherBlocks):
                 self._non_motion_dwell(block)
             if block.code in G_FILLED and block.cells[2] is ABSENT:
                 block.cells[2] = self.fill_g
+        held = block.cells[2]
+        if self.cycle_g_codes and block.code in ABSOLUTE_CODES and held is not ABSENT:
+            self.fill_g = held if float(held) in self.cycle_g_codes else self.fill_g  # 38 = -1
         if block.dwell_minutes:
             self.dwell_minutes += block.dwell_minutes
+        waiting = self._merge_into_motion(block) if self.merge_into_motion else None
         if (
             self.merge_s_with_t
             and block.cells[13] is not ABSENT
@@ -237,12 +263,22 @@ class OutputElement(ModernProgram, OtherBlocks):
         state.pending.rpm = None
         state.pending.spindle = ABSENT
         state.pending.m_code = ABSENT
+        if waiting is not None:
+            state.pending.spindle, state.pending.rpm = waiting
         if self.accel is not None:
             self.accel.take(block)  # A/D (option 55): numbered when it lets the block go
             return
         # numbered last: a block the move needs first (G95, a plane) takes the N before it
         block.cells[1] = self._sequence_number(block)
         self._emit(block)
+
+    def finish_program(self, record: int | None) -> None:
+        """FINI: an S or T still waiting under option 1 = 2 never went out (the part
+        programmer gives SPINDL and TOOLNO right before a move, 001 L24346-24349)."""
+        super().finish_program(record)
+        pending = self.state.pending
+        if self.merge_into_motion and (pending.tool is not ABSENT or pending.spindle is not ABSENT):
+            self.diagnostics.append(Diagnostic(NO_MOVE_FOR_S_T, None))
 
     def _sequence_number(self, block: Block) -> float | Absent:
         """N: the CL record number (option 143 = 0), or the SEQNO series, or none after
@@ -290,53 +326,6 @@ class OutputElement(ModernProgram, OtherBlocks):
         block.words = tuple((loc, printed) for loc, _, printed, _ in words if loc != 11)
         block.punch = self.tmark_code + "".join(letter + punched for _, letter, _, punched in words)
         self.emit(block)
-
-    def dwell(self, seconds: float) -> Block:
-        """A dwell block (CODE +4, manual §4.10, 001 L16296-16373): G = TABLEG(5) and the
-        time divided by option 56 in the option-57 register; or, with option 57 = 11, the
-        F-register dwell F = 60 GDIMUL / t under the dwell G or the smallest dimension code
-        from G11 up, whose multiplier scales the control's time (001 L16341-16370)."""
-        block = Block(Code.DWELL)
-        block.dwell_minutes = seconds / 60.0
-        self._put_dwell(block, seconds)
-        return block
-
-    def put_dwell(self, block: Block, seconds: float) -> None:
-        """The dwell's G and time word in the machine's dwell register (option 57)."""
-        self._put_dwell(block, seconds)
-
-    def _put_dwell(self, block: Block, seconds: float) -> None:
-        machine = self.state.machine
-        register = int(machine.number_option(57))
-        if register == 11:
-            code = self.dwell_code
-            block.cells[2] = ABSENT if code is None else float(code.code)
-            multiplier = 1.0 if code is None else max(code.gdimul, 1.0)
-            block.cells[11] = 60.0 * multiplier / seconds if seconds else ABSENT
-            self.words.previous_f = ABSENT  # the F dwell overwrote the control's feed
-            return
-        block.cells[2] = self.dwell_g
-        block.cells[register] = seconds / (machine.number_option(56) or 1.0)
-
-    def _non_motion_dwell(self, block: Block) -> None:
-        """Options 98 and 148 (001 L25585-25602, L26140-26152): an F momentary dwell in
-        non-motion blocks (+N: not in dwell blocks; -N: in them too), with G = TABLEG(5);
-        or an N-second G04 dwell in every non-motion block (+N) or in STOP/OPSTOP blocks
-        only (-N). The manual forbids both at once; option 98 wins."""
-        machine = self.state.machine
-        momentary = machine.number_option(98)
-        if momentary and (block.code is not Code.DWELL or momentary < 0):
-            if block.cells[11] is ABSENT:
-                block.cells[11] = abs(momentary)
-                self.words.previous_f = ABSENT
-            if block.cells[2] is ABSENT:
-                block.cells[2] = self.dwell_g
-            return
-        seconds = machine.number_option(148)
-        if block.code is Code.DWELL or not seconds or (seconds < 0 and not block.stop):
-            return
-        self._put_dwell(block, abs(seconds))
-        block.dwell_minutes += abs(seconds) / 60.0
 
     def store_m(self, code: float) -> None:
         """STOREM (001 L38041-38087): one M code waits for the next block; a second one
@@ -454,20 +443,6 @@ class OutputElement(ModernProgram, OtherBlocks):
             block.cut_minutes = length / ipm
         self.cut_minutes += block.cut_minutes
 
-    def _rotary_departure(self, block: Block) -> float:
-        """SELGRO's measure for a multiaxis block (CODE 0 or a circle): the largest rotary
-        departure in DBFSEG 6, 7, 18 (output units), 0.0 when it turns nothing. A
-        five-axis machine by data (machine.kinematics) or absolute output (option
-        251 = 1) has G01/G02/G03 without ranges: 0.0 there too (001 L6052-6069,
-        L6150-6170, L6171-6282)."""
-        machine = self.state.machine
-        if machine.kinematics is not None or machine.number_option(251) == 1:
-            return 0.0
-        return max(
-            (abs(float(v)) for cell in ROTARY_CELLS if (v := block.cells[cell]) is not ABSENT),
-            default=0.0,
-        )
-
     def _check_feed(self) -> None:
         """No FEDRAT before the first cut: option 23, once, with the manual's comment
         (001 L34083, L24674-24679)."""
@@ -532,6 +507,16 @@ class OutputElement(ModernProgram, OtherBlocks):
         if block.punched:
             punch = self.separator.join(letter + punched for _, letter, _, punched in words)
             block.punch = "/" + punch if block.skipped else punch
+
+
+def _spindle_block(block: Block, state: PostState) -> bool:
+    """A block with nothing of its own while an S waits: SPINDL's speed block."""
+    return (
+        block.code is Code.NONMOTION
+        and state.pending.spindle is not ABSENT
+        and not block.dwell_minutes
+        and all(cell is ABSENT for cell in block.cells)
+    )
 
 
 def _nowhere(block: Block) -> None:

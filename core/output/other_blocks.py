@@ -11,9 +11,12 @@ from gecent.core.absent import ABSENT, Absent
 from gecent.core.errors import Diagnostic
 from gecent.core.feed.contour import FeedCommand
 from gecent.core.feed.positioning import XY, FeedContext, FeedType, Z
+from gecent.core.machine.definition import ROTARY_CELLS
 from gecent.core.motion.gcode import RotaryCodes
 from gecent.core.motion.limits import SlideLimits
+from gecent.core.motion.rounding import half_up_float
 from gecent.core.output.block import Block, Code
+from gecent.core.output.codes import MOVING_CODES
 from gecent.core.output.modern import ModernControl
 from gecent.core.output.words import WordFormatter
 from gecent.core.state import PostState
@@ -37,6 +40,7 @@ class OtherBlocks:
     feed: FeedCommand
     modern: ModernControl
     words: WordFormatter
+    repeats_suppressed: bool
 
     def _check_feed(self) -> None:
         raise NotImplementedError
@@ -117,7 +121,7 @@ class OtherBlocks:
     def _rotary(self, block: Block) -> None:
         """An incremental rotary block: SELGRO's G code, and the feed over the arc the part
         radius (option 112) sweeps, held to the table's feed range (options 113, 114 in
-        RPM) (001 L10936-10984, L6171-6282)."""
+        RPM) (001 L10936-10984, L6171-6282); after a RAPID, the table's rapid instead."""
         assert block.rotary is not None
         cell, degrees = block.rotary
         code = self.rotary_codes.select(abs(float(block.cells[cell])))  # type: ignore[arg-type]
@@ -126,6 +130,26 @@ class OtherBlocks:
         radius = machine.number_option(112)
         length = radians(degrees) * radius
         per_rpm = 2 * pi * radius
+        if block.rapid or self.state.feed.rapid_requested:
+            # chart 8: DBFSEG(11) = -ROTRAP, option 115's RPM at the part radius, then
+            # RAPFLG = 0 (001 L19839-19842, L18231-18235); the marker becomes the F as a
+            # linear rapid's does: the feedrate number at that speed held to |option 45|,
+            # none when option 45 < 0 (CONTUR, 001 L12530-12638)
+            self.state.feed.rapid_requested = False
+            ipm = machine.number_option(115) * per_rpm
+            limit = machine.number_option(45)
+            command = code.gdimul * ipm / length
+            if command > abs(limit):
+                command = abs(limit)
+                ipm = command * length / code.gdimul
+            f_register = machine.registers.formats[11]
+            decimals = f_register.right if f_register is not None else 0
+            block.cells[11] = half_up_float(command, decimals) if limit >= 0 else ABSENT
+            block.cells[19] = ipm
+            block.rapid = True
+            block.cut_minutes = length / ipm
+            self.cut_minutes += block.cut_minutes
+            return
         low, high = machine.number_option(113) * per_rpm, machine.number_option(114) * per_rpm
         self._check_feed()
         ipm = min(max(self.state.feed.ipm, low), high)
@@ -135,3 +159,43 @@ class OtherBlocks:
         block.f_format = f_format
         block.cut_minutes = length / ipm
         self.cut_minutes += block.cut_minutes
+
+    def _merge_into_motion(self, block: Block) -> tuple[float, float | None] | None:
+        """Option 1 = 2: the held T goes into the next positioning move (with its X and Y,
+        which option 40 never leaves out of a block with a T, 001 L24919-24927); any other
+        block leaves the S waiting, returned to be put back after it."""
+        pending = self.state.pending
+        if block.code in MOVING_CODES:
+            if pending.tool is not ABSENT:
+                block.cells[13] = pending.tool
+                pending.tool = ABSENT
+                if self.repeats_suppressed and block.code is Code.POSITION_XY:
+                    self._restore_positions(block)
+            return None
+        if pending.spindle is ABSENT:
+            return None
+        waiting = (pending.spindle, pending.rpm)
+        pending.spindle, pending.rpm = ABSENT, None
+        return waiting
+
+    def _restore_positions(self, block: Block) -> None:
+        """X and Y that option 40 left out of a positioning block as repeats, put back."""
+        if block.position is None:
+            return
+        for axis in (0, 1):
+            if block.cells[3 + axis] is ABSENT:
+                block.cells[3 + axis] = block.position[axis] * self.step
+
+    def _rotary_departure(self, block: Block) -> float:
+        """SELGRO's measure for a multiaxis block (CODE 0 or a circle): the largest rotary
+        departure in DBFSEG 6, 7, 18 (output units), 0.0 when it turns nothing. A
+        five-axis machine by data (machine.kinematics) or absolute output (option
+        251 = 1) has G01/G02/G03 without ranges: 0.0 there too (001 L6052-6069,
+        L6150-6170, L6171-6282)."""
+        machine = self.state.machine
+        if machine.kinematics is not None or machine.number_option(251) == 1:
+            return 0.0
+        return max(
+            (abs(float(v)) for cell in ROTARY_CELLS if (v := block.cells[cell]) is not ABSENT),
+            default=0.0,
+        )

@@ -53,7 +53,9 @@ class WordFormatter:
         self.diameter = machine.number_option(260) == 1
         self.absolute_centre = machine.number_option(252) == 2
         self.zero_rule = machine.number_option(51)
-        self.suppress_g = machine.number_option(38) == 0
+        # option 38 = 0 or +2: a G code equal to the last one output is left out; only in
+        # blocks that move (``suppress``) both ways: 0's non-motion G is the block's command
+        self.suppress_g = machine.number_option(38) in (0.0, 2.0)
         self.suppress_f = machine.number_option(107) in (1.0, 2.0)
         self.previous_g: float | Absent = ABSENT
         self.previous_f: float | Absent = ABSENT

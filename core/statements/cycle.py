@@ -5,7 +5,14 @@ every later CL point is drilled by the expansion of core/motion/cycles.py
 modern contouring control with absolute dimensions (gecent option 251 = 1) too:
 core/motion/control_cycles.py (G81-G89). On a lathe (option 132 = 0) whose control has the
 cycle's G code, CYCLEL puts that G code in a block by itself and the points that follow are
-ordinary moves for the control's cycle (001 L30038-30093)."""
+ordinary moves for the control's cycle (001 L30038-30093).
+
+On a multiaxis machine (CYCLGX, 001 L30206-30246) the hole is drilled by moves along the
+tool axis, each through the machine's transform (core/motion/multiaxis_cycles.py); a
+control's cycle (G81-G89) drills along the machine's Z and is not used there. A form the
+control's cycle cannot drill is drilled by moves (ControlCycles.unfit names why). CYCLE/IN on
+a positioning machine is the withdrawal code TABLEG(90) in a block by itself, where the tool
+stands; the points that follow are plain positioning moves."""
 
 from __future__ import annotations
 
@@ -23,6 +30,7 @@ from gecent.core.motion.cycles import (
     parse_cycle,
     spindle_axis,
 )
+from gecent.core.output.block import Block, Code
 from gecent.core.statements.feed import program_feed
 
 # the control's own cycle block holds G, Z and R only (CYCLGP, 001 L30164-30178)
@@ -30,6 +38,7 @@ CONTROL_CYCLE_KEEPS = "CYCLE {} NOT OUTPUT: THE CONTROL'S OWN CYCLE DOES IT"
 # CYCLEL's block holds the G code alone (001 L30049-30056)
 LATHE_CYCLE_KEEPS = "CYCLE {} NOT OUTPUT: THE LATHE'S CYCLE G CODE GOES OUT BY ITSELF"
 NO_DWELL_TIME = "CYCLE/{} NAMES NO DWELL TIME: IT DWELLS 0 SECONDS"
+BY_MOVES = "CYCLE/{} IS DRILLED BY MOVES: {}"  # the control's cycle cannot (unfit)
 LATHE = 0  # option 132, the machine type
 
 if TYPE_CHECKING:
@@ -63,9 +72,6 @@ def cycle(run: Post, statement: Statement) -> None:
         run.control_cycle_element().off(statement.number)
     if not parsed.depth and parsed.kind != "IN":
         raise InputError(f"CYCLE/{parsed.kind} needs a depth", statement.where)
-    if positioning and parsed.kind == "IN":
-        # CYCLGP's block is a plunge and a rapid distance; a withdrawal has neither
-        raise NotYetSupported("CYCLE/IN on a positioning machine", statement.where)
     if positioning and machine.g_code(cell) is None:
         raise NotYetSupported(
             f"CYCLE/{parsed.kind} on a positioning machine without its G code TABLEG({cell})",
@@ -73,24 +79,34 @@ def cycle(run: Post, statement: Statement) -> None:
         )
     if positioning:
         _unsent(run, parsed, statement, CONTROL_CYCLE_KEEPS)
+    if positioning and parsed.kind == "IN":
+        _positioning_withdrawal(run, parsed, statement, float(machine.g_code(cell) or 0))
+        return
     # a control that bores also makes BORE's forms: control_cycles names a missing cell
     bore_form = parsed.kind.startswith("BORE,") and machine.g_code(CYCLE_TYPES["BORE"][1])
-    control = not positioning and (machine.g_code(cell) is not None or bool(bore_form))
+    multiaxis = machine.multiaxis and not positioning
+    control = (
+        not positioning and not multiaxis and (machine.g_code(cell) is not None or bool(bore_form))
+    )
     if control and machine.number_option(251) != 1:
         raise NotYetSupported(
             f"CYCLE/{parsed.kind} by the control's own cycle (TABLEG({cell})) with "
             "incremental dimensions (option 251 = 1 takes it in absolute ones)",
             statement.where,
         )
+    unfit = None
+    if control:
+        unfit = run.control_cycle_element().unfit(parsed, run.state.spindle.direction)
+        control = unfit is None
     units = run.units
     run.cycle = in_machine_units(parsed, units.length)
     run.cycle_first_z = None
     if not positioning and not control:
-        run.cycle = _expanded(run, run.cycle, statement)
+        run.cycle = _expanded(run, run.cycle, statement, multiaxis)
+        if unfit is not None:
+            run.warn(Diagnostic(BY_MOVES.format(parsed.kind, unfit), statement.where))
     if control:
-        element = run.control_cycle_element()
-        element.check(run.cycle, statement.where)
-        run.control_cycles = element
+        run.control_cycles = run.control_cycle_element()
     elif run.control_cycles is not None:  # a cycle the control lacks follows one it has
         run.control_cycles.off(statement.number)
         run.control_cycles = None
@@ -99,13 +115,18 @@ def cycle(run: Post, statement: Statement) -> None:
     _program_cycle_feed(run, parsed, statement)
 
 
-def _expanded(run: Post, cycle: Cycle, statement: Statement) -> Cycle:
-    """The cycle gecent makes by moves: along the spindle axis, with the machine's spindle
-    stop (and program stop) for DRAG and MANUAL."""
+def _expanded(run: Post, cycle: Cycle, statement: Statement, multiaxis: bool) -> Cycle:
+    """The cycle gecent makes by moves: along the spindle axis (a multiaxis machine's tool
+    axis), with the machine's spindle stop (and program stop) for DRAG and MANUAL."""
     machine = run.machine
-    axis = spindle_axis(machine)
+    axis = 2 if multiaxis else spindle_axis(machine)  # (the tool axis's frame: its third)
     if axis is None:
-        raise NotYetSupported("a canned cycle on a machine with no Z axis (option 59)")
+        # the plunge would go out on no register: the tape would drill nothing
+        raise InputError(
+            f"CYCLE/{cycle.kind} on a machine that outputs no Z axis (option 59 = "
+            f"{machine.number_option(59):.0f}): there is no spindle axis to drill along",
+            statement.where,
+        )
     way_out = cycle.kind.rsplit(",", 1)[-1]
     needed = {"DRAG": (SPINDLE_OFF,), "MANUAL": (SPINDLE_OFF, PROGRAM_STOP)}.get(way_out, ())
     for cell in needed:
@@ -114,11 +135,27 @@ def _expanded(run: Post, cycle: Cycle, statement: Statement) -> Cycle:
                 f"CYCLE/{cycle.kind} on a machine without TABLEM({cell})", statement.where
             )
     restart = 5 if run.state.spindle.direction < 0 else 4  # the spindle turns as it did
-    if axis != 2:
+    if axis != 2 and not multiaxis:
         # the level the cycle starts from, along the spindle axis (Post takes CL z itself)
         position = run.state.position
         run.cycle_first_z = position.previous_part[axis] - position.translation[axis]
     return replace(cycle, axis=axis, restart_cell=restart)
+
+
+def _positioning_withdrawal(run: Post, parsed: Cycle, statement: Statement, code: float) -> None:
+    """CYCLE/IN on a positioning machine: the withdrawal code TABLEG(90) in a CODE -16 block
+    by itself, made at the statement as CYCLGP makes its block (001 L30164-30182); a
+    withdrawal has no plunge and no rapid distance, so no Z and no R. The control takes the
+    spindle out where the tool stands; the points that follow are plain positioning moves
+    (the expansion's IN too withdraws, then moves across)."""
+    run.cycle = None
+    position = run.state.position
+    block = Block(Code.POSITION_Z, statement.number)
+    block.cells[2] = code
+    block.position = tuple(position.previous[:3])
+    block.steps = (0, 0, 0)
+    run.output.output(block)
+    _program_cycle_feed(run, parsed, statement)
 
 
 def _lathe_block(run: Post, parsed: Cycle, statement: Statement, code: float) -> None:

@@ -4,11 +4,13 @@ L39947-39988) and POSITN (PSTNGP, GEPOS, L34880-34932); spec 08 §2.22, §2.27, 
 
 * **GOHOME** moves the slides to the home position, options 184-190 in machine coordinates
   and CL order (L26455-26500): DEPART, SEGMNT and OUTPUT (L20693-20697, L21659), at the
-  feed in force or at rapid after RAPID, never linearity tested (GOHOME calls no LINRTY).
+  feed in force or at rapid after RAPID, never linearity tested (GOHOME calls no LINRTY);
+  on a positioning machine a POSMOV to the home positions, with no cycle.
 * **LOAD/TOOL, n[, SMALL|LARGE][, LENGTH, l]** on a multiaxis machine: the machine's
   MACFUN first (MCHCON 6, option 133), then GOHOME, then the load G code TABLEG(26-29) of
   the head and gripper with T = n in a CODE -4 block; the loaded tool's R + TL come from
-  the class (MAFORK = 0): R options 102-105 by head and gripper, TL the length.
+  the class (MAFORK = 0): R options 102-105 by head and gripper, TL the length. On a
+  positioning machine LOAD/TOOL, n[, OFSETL, k][, LENGTH, l] is TOOLNO's tool change.
 * **PICKUP** and **UNLOAD** on a positioning machine: the tool's load (TABLEG 24, else the
   cycle-off G and TABLEM 32) and unload (TABLEG 26 with T, else the cycle-off G and
   TABLEM 33) codes, with comment 40 when the magazine is not at the tool's pocket.
@@ -23,6 +25,7 @@ GOHOME, POSITN").
 
 from __future__ import annotations
 
+from dataclasses import replace
 from math import radians, sqrt
 from typing import TYPE_CHECKING, Any, Protocol, runtime_checkable
 
@@ -38,6 +41,7 @@ if TYPE_CHECKING:
     from gecent.core.dispatch.context import Post
     from gecent.core.motion.linear import LinearMotion
     from gecent.core.motion.multiaxis import MultiaxisMotion
+    from gecent.core.motion.positioning import PositioningMotion
 
 HOME_LINEAR = (184, 185, 186)  # X, Y, Z (machine coordinates, CL order)
 HOME_ROTARY = (187, 188, 189, 190)  # rotary head, rotary table, third rotary, secondary
@@ -57,6 +61,14 @@ class _Linear(Protocol):
 
     @property
     def motion(self) -> LinearMotion: ...
+
+
+@runtime_checkable
+class _Positioning(Protocol):
+    """A run with a positioning motion element (core/run.py's)."""
+
+    @property
+    def positioning(self) -> PositioningMotion: ...
 
 
 @runtime_checkable
@@ -108,8 +120,6 @@ def _go_home(run: Post, statement: Statement, target: list[float | None] | None)
     for an axis it left where it is."""
     machine = run.machine
     where = statement.where
-    if machine.number_option(1) != 0:
-        raise NotYetSupported("GOHOME on a positioning machine", where)
     if not run.state.position.from_given:
         raise InputError(
             f"{statement.major} before any FROM: the slides' position, which the move home "
@@ -123,6 +133,9 @@ def _go_home(run: Post, statement: Statement, target: list[float | None] | None)
     )
     if machine.multiaxis:
         _multiaxis_home(run, _multiaxis(run, statement), statement, home)
+        return
+    if machine.number_option(1) != 0 and not any(home[3:]):
+        _positioning_home(run, statement, home)
         return
     if any(home[3:]):
         raise NotYetSupported(
@@ -140,6 +153,26 @@ def _go_home(run: Post, statement: Statement, target: list[float | None] | None)
         raise NotYetSupported("GOHOME in this context", where)
     _rapid_if_asked(run, path_length(run.state.position, leg))
     run.motion.record(leg)
+
+
+def _positioning_home(run: Post, statement: Statement, home: list[float | None]) -> None:
+    """POSMOV to the home point: the punched positions are the machine's, so the CL point
+    is home less TRANS and less the Z adjustment POSMOV makes (options 140 and 86 < 0).
+    The move has no cycle (a hole at home would be drilled) and follows option 130; a
+    RAPID before it, or rapid in force, takes it at rapid (POSMOV's own TSTFLG)."""
+    if not isinstance(run, _Positioning):
+        raise NotYetSupported("GOHOME in this context", statement.where)
+    motion = run.positioning
+    position = run.state.position
+    point = [
+        (position.present_part[axis] if value is None else value) - position.translation[axis]
+        for axis, value in enumerate(home[:3])
+    ]
+    point[2] -= motion._z_shift()  # (its adjustment of Z, undone: home is the machine's)
+    leg = Motion(
+        statement.file, statement.line, statement.number, MotionSubtype.GOTO, (tuple(point),)
+    )
+    motion.record(leg, None)
 
 
 def _rapid_if_asked(run: Post, length: float) -> None:
@@ -194,6 +227,9 @@ def load(run: Post, statement: Statement) -> None:
     """LOAD/TOOL, n[, SMALL|LARGE][, LENGTH, l] (LOADGM)."""
     machine = run.machine
     where = statement.where
+    if not machine.multiaxis and machine.number_option(1) != 0:
+        _positioning_load(run, statement)
+        return
     if not machine.multiaxis:
         # GECENT's LOAD is the multiaxis one (GEMAXS, "OPTAB(116) must be set"); APT's
         # generic LOAD/TOOL elsewhere is a tool change gecent reads as LOADTL or TOOLNO
@@ -243,6 +279,24 @@ def load(run: Post, statement: Statement) -> None:
     if length is not None:
         loaded.length = run.units.length(length)
     _new_constants(run, motion)
+
+
+def _positioning_load(run: Post, statement: Statement) -> None:
+    """LOAD/TOOL, n[, OFSETL, k][, LENGTH, l] on a positioning machine: the tool change
+    TOOLNO makes (TOOLGP), as options 86 and 96 name LOAD/TOOL beside TOOLNO (001
+    L25406-25434, L25526-25530); the machine's MACFUN LOAD (MCHCON 6) comes first."""
+    args = statement.args
+    if not args or not isinstance(args[0], Word) or args[0].name != "TOOL":
+        raise InputError(
+            "LOAD expects LOAD/TOOL, n[, OFSETL, k][, LENGTH, l] on a positioning machine",
+            statement.where,
+        )
+    engine = run.macros if isinstance(run, _Macros) else None
+    if engine is not None and engine.hooks.macfun(
+        HookPoint.LOAD, record=statement, values=statement.numbers(), words=statement.words()
+    ):
+        return  # (RETURN = 1: the machine's own load sequence did it all)
+    run.tool.statement(replace(statement, major="LOAD/TOOL", args=args[1:]))
 
 
 def _load_arguments(statement: Statement) -> tuple[int, bool, float | None]:

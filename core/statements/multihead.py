@@ -13,8 +13,9 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from gecent.core.cl.records import Statement, Word
-from gecent.core.errors import FatalError, InputError, NotYetSupported
+from gecent.core.errors import FatalError, InputError
 from gecent.core.output.block import Block, Code
+from gecent.core.statements.safety import single_head_safety
 
 if TYPE_CHECKING:
     from gecent.core.dispatch.context import Post
@@ -117,10 +118,11 @@ def prfseq(run: Post, statement: Statement) -> None:
 def safety(run: Post, statement: Statement) -> None:
     """SAFETY/dx,dy,dz on a multihead machine (SAFEGM, 001 L36514-36545; SAFHD1/SAFHD2,
     L7341-7346): the departures that withdraw this head from the work when it is parked,
-    in a CODE 17 information block (DBFSEG(11) = 1). The single-head SAFETY (FACE, TURN,
-    BORE, the R register) is not built."""
+    in a CODE 17 information block (DBFSEG(11) = 1). A single-head run's SAFETY (the
+    lathe's FACE, TURN, BORE; the R register) is core/statements/safety.py's."""
     if run.state.head == 0:
-        raise NotYetSupported("SAFETY statement", statement.where)
+        single_head_safety(run, statement)
+        return
     args = statement.args
     if len(args) != 3 or any(isinstance(a, Word) for a in args):
         raise InputError(

@@ -2,9 +2,10 @@
 FEDOVR (feedrate override, L31066-31100), PALLET (SELPAL) and READER (SELRDR)
 (L37184-37248), each an M code in a block by itself. SELECT/HEAD,n (SELHED, 001 L7214-7216)
 is routed by a multihead program's first pass (core/multihead/first_pass.py); met by a
-single-head run it is refused. SELECT/OFSETL,n (SELOFS, L37146-37182) puts the offset n in
-register 17 of a CODE 1 block, SELECT/TABLE,n (SELTAB, L37250-37285) the table n in
-register 16; SELECT/TOOL,n (SELTUL, L37287-37335) preselects a tool (core/tool.py).
+single-head run, SELECT/HED,1|2|3|BAR is SELHED's head code (L36846-36893).
+SELECT/OFSETL,n (SELOFS, L37146-37182) puts the offset n in register 17 of a CODE 1
+block, SELECT/TABLE,n (SELTAB, L37250-37285) the table n in register 16;
+SELECT/TOOL,n (SELTUL, L37287-37335) preselects a tool (core/tool.py).
 
 SELECT/HED,SADDLE, d[, TRAV | , f[, IPM|IPR]] (SELHED to SADDLE, GELATH, L36448-36512):
 the saddle's move d in register 16, at rapid (TRAV: TABLEM(25) with option 87's dwell
@@ -42,6 +43,15 @@ SADDLE_RAPID_CELL = 25  # TABLEM(25) "Rapid traverse on saddle" (001 L23115)
 FEED_REGISTER = 11
 FEED_MODE_ASSUMED = "OPTION FEEDRATE MODE ASSUMED."  # SADDLE's comment (001 L36490-36491)
 SADDLE_USAGE = "SELECT/HED,SADDLE expects a move d, then TRAV, or a feed f with IPM or IPR"
+# SELHED's heads: "Head n - On", TABLEM(125)-(127), and "Engage Bar", TABLEM(57)
+# (001 L23591-23595, L23247): docs/decisions.md (SAFETY and SELECT/HED)
+HEAD_USAGE = "SELECT/HED expects 1, 2, 3, BAR, or SADDLE and its move"
+HEAD_CELLS: dict[str | float, int] = {1.0: 125, 2.0: 126, 3.0: 127, "BAR": 57}
+# the gear-engage codes of heads 2 and 3, rapid and feed on X, Y, Z (spec 07 §4.2)
+HEAD_GEAR_CELLS: dict[str | float, tuple[int, ...]] = {
+    2.0: tuple(range(142, 148)),
+    3.0: tuple(range(148, 154)),
+}
 
 
 def select(run: Post, statement: Statement) -> None:
@@ -113,17 +123,42 @@ def _tool(run: Post, statement: Statement) -> None:
 
 
 def _head(run: Post, statement: Statement) -> None:
-    """SELECT/HEAD,n reaches a run only when the program is not a multihead one;
-    SELECT/HED,SADDLE is the saddle's move."""
+    """SELECT/HED,1|2|3|BAR (SELHED, 001 L36846-36893): the head's M code in a block by
+    itself, TABLEM(125), (126), (127) "Head n - On" or (57) "Engage Bar" (L23247,
+    L23591-23595), after leaving rapid: the rapid flags are SELHED's, so the new head
+    starts in its feed range. SELECT/HEAD,n of a multihead program is routed by its
+    first pass and never reaches this; SELECT/HED,SADDLE is the saddle's move."""
     rest = statement.args[1:]
     if rest and isinstance(rest[0], Word) and rest[0].name == "SADDLE":
         saddle(run, statement)
         return
-    raise InputError(
-        "SELECT/HEAD selects a head of a multihead program: COMBIN/2 must come first, "
-        "before the first motion, on a machine with two heads",
-        statement.where,
-    )
+    where = statement.where
+    if len(rest) != 1:
+        raise InputError(HEAD_USAGE, where)
+    name: str | float = rest[0].name if isinstance(rest[0], Word) else float(rest[0])
+    cell = HEAD_CELLS.get(name)
+    if cell is None:
+        raise InputError(HEAD_USAGE, where)
+    machine = run.machine
+    if all(machine.m_code(c) is None for c in HEAD_CELLS.values()):
+        raise InputError(
+            f"SELECT/HED,{name if isinstance(name, str) else f'{name:g}'}: machine "
+            f"{machine.label} has no head codes "
+            "(TABLEM(125)-(127), (57) for BAR); to select a head of a multihead program, "
+            "COMBIN/2 must come first, before the first motion, on a machine with two heads",
+            where,
+        )
+    gears = HEAD_GEAR_CELLS.get(name, ())
+    if machine.number_option(46) != 0 and any(machine.m_code(c) is not None for c in gears):
+        # RAPIDO shifts head 1's gears (TABLEM 42-47) whichever head is selected
+        raise NotYetSupported(
+            f"rapid gear shifts of head {name:g} (TABLEM({gears[0]})-({gears[-1]}))", where
+        )
+    feed = run.state.feed
+    feed.rapid_requested = False  # RAPFLG
+    if feed.rapid_mode:
+        run.rapid.leave()  # RAPIDX: FLRPON, FRAPID, RAPLOW, RAPRNG
+    code_by_itself(run, statement, cell)
 
 
 def saddle(run: Post, statement: Statement) -> None:

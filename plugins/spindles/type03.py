@@ -78,6 +78,8 @@ class RangeCodeSpindle(TableSpindle):
     number: int = 3
     name: str = "associated speed code with range and/or direction M codes"
     section: str = "§4.5.4"
+    # TYPE03 prints "NO DIRECTION GIVEN IN FIRST SPINDLE STATEMENT" (001 L39250-39267)
+    names_missing_direction: bool = True
     manual_example: str = MANUAL_EXAMPLE
 
     def ranges(self, machine: MachineDefinition) -> tuple[tuple[float, ...], ...]:

@@ -63,6 +63,8 @@ class VariableRangeSpindle(TableSpindle):
     number: int = 10
     name: str = "variable speed with range and direction M code"
     section: str = "§4.5.11"
+    # TYPE10 prints "NO DIRECTION GIVEN IN FIRST SPINDLE STATEMENT" (001 L39493-39524)
+    names_missing_direction: bool = True
     manual_example: str = MANUAL_EXAMPLE
     own_dwells: bool = True  # its shift dwell is fixed at 6 s; option 54 is not used
 

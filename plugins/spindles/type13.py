@@ -181,6 +181,8 @@ class ExpandedQuasiEiaSpindle:
     number: int = 13
     name: str = "expanded quasi-EIA 3-digit code (two heads)"
     section: str = "§4.5.14"
+    # TYPE13 prints "NO DIRECTION GIVEN IN FIRST SPINDLE STATEMENT" (001 L39664-39667)
+    names_missing_direction: bool = True
     manual_example: str = EXAMPLE
 
     def range_count(self, machine: MachineDefinition) -> int:

@@ -69,6 +69,8 @@ class StoredCodeSpindle(TableSpindle):
     number: int = 16
     name: str = "type 3 with non-unit-increasing codes"
     section: str = "§4.5.17"
+    # TYPE16 prints "NO DIRECTION GIVEN IN FIRST SPINDLE STATEMENT" (001 L39790-39810)
+    names_missing_direction: bool = True
     manual_example: str = EXAMPLE
 
     def table(

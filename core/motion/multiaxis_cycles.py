@@ -1,0 +1,178 @@
+"""Canned cycles on a multiaxis machine: CYCLGX (001 L30206-30246; spec 08 §3.3).
+
+The manual says only that CYCLGX "issues a command block for the programmed canned cycle"
+(MACH40's MACFUN makes that block for OFF, TAP, OUT and IN, 001 L28129-28161: the plugin
+gecent.plugins.macfuns.macf40). The other cycles, on the manual's transform classes and on
+the five-axis machines by data (docs/five-axis.md) alike, are drilled by moves, as
+core/motion/cycles.py drills them on a three-axis machine, but along the tool axis:
+
+* each CL point under CYCLE is a hole's top, its tool axis (i, j, k, from the tip towards
+  the holder) the hole's axis: given with the point, or the one in force;
+* the hole's moves are worked out in a frame whose third axis is the tool axis (the same
+  legs, R plane, pecks, dwells and ways out as on a mill, the "level" measured along the
+  tool axis), then carried back to part coordinates and sent, each with the tool axis,
+  through the multiaxis element (GOLINE, the transform class or the kinematic chain);
+* RETURN,0 goes back to the level along the tool axis the cycle's first hole started from.
+
+A hole whose tool axis is not the one the tool stands at would turn the tool on the way to
+it, next to the part: that is a five-axis hole pattern, not yet built (3+2 holes, along a
+fixed tool axis, are). The tool is positioned along the new axis by an ordinary move first.
+"""
+
+from __future__ import annotations
+
+from dataclasses import replace
+from math import isfinite, sqrt
+
+from gecent.core.cl.records import Motion, MotionSubtype
+from gecent.core.errors import InputError, NotYetSupported
+from gecent.core.feed.rapid import RapidTraverse
+from gecent.core.motion.cycles import Cycle, Leg, cycle_legs
+from gecent.core.motion.guard import check_segments
+from gecent.core.motion.linear import godlta_delta, path_length
+from gecent.core.motion.multiaxis import MultiaxisMotion
+from gecent.core.output.element import OutputElement
+from gecent.core.state import PostState
+
+Vector = tuple[float, float, float]
+# a hole's tool axis this near the one the tool stands at is the same axis (CL files print
+# direction cosines to 6 decimals or so; 1e-5 is 0.0006 degrees)
+SAME_AXIS = 1e-5
+
+
+def _dot(a: Vector, b: Vector) -> float:
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+
+
+def hole_frame(axis: Vector) -> tuple[Vector, Vector, Vector]:
+    """Unit vectors (e1, e2, axis), right-handed, the third along the tool axis; for the
+    tool along +Z exactly the part's own axes, so a vertical hole is drilled to the same
+    numbers as on a three-axis mill."""
+    reference: Vector = (1.0, 0.0, 0.0) if abs(axis[0]) < 0.9 else (0.0, 1.0, 0.0)
+    along = _dot(reference, axis)
+    first: Vector = (
+        reference[0] - along * axis[0],
+        reference[1] - along * axis[1],
+        reference[2] - along * axis[2],
+    )
+    length = sqrt(_dot(first, first))
+    e1: Vector = (first[0] / length, first[1] / length, first[2] / length)
+    e2: Vector = (
+        axis[1] * e1[2] - axis[2] * e1[1],
+        axis[2] * e1[0] - axis[0] * e1[2],
+        axis[0] * e1[1] - axis[1] * e1[0],
+    )
+    return e1, e2, axis
+
+
+def tool_axis_legs(
+    cycle: Cycle, at: Vector, hole: Vector, axis: Vector, first_level: float
+) -> list[tuple[tuple[float, ...], Leg]]:
+    """The moves that drill ``hole`` (its top, a CL point) along the unit tool ``axis`` from
+    ``at``: each leg of core/motion/cycles.py worked out in the hole's frame, with its end
+    carried back to a CL point with the tool axis (x, y, z, i, j, k). ``first_level``: the
+    level along the axis the cycle started from (RETURN,0)."""
+    e1, e2, _ = hole_frame(axis)
+
+    def framed(p: Vector) -> Vector:
+        return (_dot(p, e1), _dot(p, e2), _dot(p, axis))
+
+    legs = []
+    for leg in cycle_legs(replace(cycle, axis=2), framed(at), framed(hole), first_level):
+        a, b, c = leg.point
+        part = tuple(a * e1[n] + b * e2[n] + c * axis[n] for n in range(3))
+        legs.append(((*part, *axis), leg))
+    return legs
+
+
+class MultiaxisHoles:
+    """CYCLGX's holes: the legs of core/motion/cycles.py along the tool axis, through the
+    multiaxis element."""
+
+    def __init__(
+        self,
+        state: PostState,
+        output: OutputElement,
+        rapid: RapidTraverse,
+        multiaxis: MultiaxisMotion,
+    ) -> None:
+        self.state = state
+        self.output = output
+        self.rapid = rapid
+        self.multiaxis = multiaxis
+
+    def record(self, record: Motion, cycle: Cycle, first_level: float | None) -> float:
+        """Every point of ``record`` drilled as a hole; returns the level along the tool
+        axis the cycle started from (``first_level``, or this record's start the first
+        time)."""
+        position = self.state.position
+        for point in record.points:
+            tx, ty, tz = position.translation
+            previous = position.previous_part
+            at: Vector = (previous[0] - tx, previous[1] - ty, previous[2] - tz)
+            standing = self.multiaxis.tool_axis
+            if record.subtype is MotionSubtype.GODLTA:
+                delta = godlta_delta(point)
+                hole: Vector = (at[0] + delta[0], at[1] + delta[1], at[2] + delta[2])
+                axis = standing
+            else:
+                hole = (point[0], point[1], point[2])
+                axis = self._axis(record, point, standing)
+            if first_level is None:
+                first_level = _dot(at, axis)
+            self._drill(record, cycle, axis, at, hole, first_level)
+        assert first_level is not None
+        return first_level
+
+    def _axis(self, record: Motion, point: tuple[float, ...], standing: Vector) -> Vector:
+        """The hole's tool axis, a unit vector; it must be the one the tool stands at."""
+        if len(point) < 6:
+            return standing
+        i, j, k = point[3:6]
+        length = sqrt(i * i + j * j + k * k)
+        if length == 0.0 or not isfinite(length):
+            raise InputError(f"the tool axis {i:g}, {j:g}, {k:g} has no direction", record.where)
+        axis: Vector = (i / length, j / length, k / length)
+        if max(abs(a - s) for a, s in zip(axis, standing, strict=True)) > SAME_AXIS:
+            raise NotYetSupported(
+                f"a canned cycle hole whose tool axis ({axis[0]:.6g}, {axis[1]:.6g}, "
+                f"{axis[2]:.6g}) is not the one the tool stands at ({standing[0]:.6g}, "
+                f"{standing[1]:.6g}, {standing[2]:.6g}): turning the tool between holes "
+                "(position the tool along the hole's axis before it)",
+                record.where,
+            )
+        return axis
+
+    def _drill(
+        self,
+        record: Motion,
+        cycle: Cycle,
+        axis: Vector,
+        at: Vector,
+        hole: Vector,
+        first_level: float,
+    ) -> None:
+        if cycle.kind == "DEEP" and cycle.step:
+            pecks = int(min(abs(cycle.depth / cycle.step), 1e18))
+            check_segments(pecks, self.state.max_segments, record.where, "deep-hole cycle")
+        machine = self.state.machine
+        for point, leg in tool_axis_legs(cycle, at, hole, axis, first_level):
+            if leg.dwell:
+                block = self.output.dwell(leg.dwell)
+                block.record = record.number
+                self.output.output(block)
+            code = None if leg.m_code_cell is None else machine.m_code(leg.m_code_cell)
+            if code is not None:
+                self.output.store_m(code)
+            self._leg(record, point, leg.rapid)
+
+    def _leg(self, record: Motion, point: tuple[float, ...], rapid: bool) -> None:
+        """One move of the hole, as a one-point record with the record's number (a rapid
+        one through RAPID's test, as any move)."""
+        leg = Motion(record.file, record.line, record.number, MotionSubtype.GOTO, (point,))
+        feed = self.state.feed
+        if rapid:
+            self.rapid.request()
+        if feed.rapid_requested or feed.rapid_mode:
+            self.rapid.motion(path_length(self.state.position, leg))
+        self.multiaxis.goline(leg, point)
