@@ -23,3 +23,20 @@ def test_cycle_off_ends_the_cycle_when_the_macfun_handles_it(tmp_path: Path) -> 
     lines = tape.read_text().splitlines()
     assert [line for line in lines if line.startswith("N008")] == ["N008G01Y+1Z-01F00498"]
     assert sum(line.startswith("N006") for line in lines) == 4  # the one hole
+
+
+def test_a_turret_corrective_move_is_printed(tmp_path: Path) -> None:
+    """TURRET/...,NOW on MACH04 (option 106 = 8): the CODE -3 corrective move is punched and
+    printed on the listing (it used to stop every printout with "not yet supported")."""
+    source = tmp_path / "t.apt"
+    source.write_text(
+        "PARTNO T\nMACHIN/GECENT,4,OPTAB,106,8\nFROM/0,0,0\nFEDRAT/10\nTURRET/1,1,2,3\n"
+        "GOTO/1,1,0\nTURRET/2,2,2.5,1,NOW\nGOTO/2,1,0\nFINI\n"
+    )
+    tape, listing = tmp_path / "t.tap", tmp_path / "t.lis"
+    command = ["post", str(source), "-o", str(tape), "--listing", str(listing)]
+    result = CliRunner().invoke(main, command)
+    assert result.exit_code == 0, result.output
+    assert "N007G01X+2Z-05F04851" in tape.read_text().splitlines()
+    printed = [line for line in listing.read_text().splitlines() if line.startswith("  007  01")]
+    assert printed and "+2." in printed[0] and "-0.5" in printed[0]
