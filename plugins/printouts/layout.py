@@ -10,6 +10,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
+from functools import cache
 from math import ceil
 from typing import TYPE_CHECKING, Any
 
@@ -133,9 +134,17 @@ def expanded_text(value: float, decimals: int, digits: int = ABSOLUTE_DIGITS) ->
     zeros, as W9 prints them (0892.3456, 1088.1366; 001 L8945-8960), with its sign; a value
     too large for the field is stars, as a FORTRAN format prints it, never a wider field
     running into its neighbour."""
-    width = 2 + digits + decimals
-    text = f"{round(value, decimals) + 0.0:+0{width}.{decimals}f}"
+    width, form = _expanded_format(decimals, digits)
+    text = form(round(value, decimals) + 0.0)
     return text if len(text) <= width else "*" * width
+
+
+@cache
+def _expanded_format(decimals: int, digits: int) -> tuple[int, Callable[[float], str]]:
+    """The field's width and its bound format (worked out once per column: the listing
+    formats every absolute column of every block)."""
+    width = 2 + digits + decimals
+    return width, f"{{:+0{width}.{decimals}f}}".format
 
 
 class RotaryReading:
