@@ -71,6 +71,7 @@ from gecent.core.reinstate import restat
 from gecent.core.spindle import SpindleElement
 from gecent.core.state import PostState, RunResult
 from gecent.core.statements import Handler, handlers
+from gecent.core.statements.safety import safety_motion
 from gecent.core.statements.threading import RAPID_THREAD
 from gecent.core.tool import ToolElement
 from gecent.core.units import UnitScale
@@ -127,6 +128,7 @@ class Run(Elements):
         self.cycle_first_z: float | None = None
         self._control_cycles: ControlCycles | None = None
         self.control_cycles: ControlCycles | None = None  # the control runs the cycle in force
+        self.safety_motions = 0  # a one-shot SAFETY (option 21 = 0) counting its motions down
         self._guard: CoordinateGuard | None = None
         # a modern control's CL file with no UNITS before its first move is warned about
         self._units_checked = not modern_output(machine)
@@ -289,8 +291,10 @@ class Run(Elements):
                 self.use_fast_path = False
                 return None
         circle = self._circle
-        special = self.cycle is not None or (
-            circle is not None and (circle.collecting or circle.centre is not None)
+        special = (
+            self.cycle is not None
+            or self.safety_motions != 0  # its off code waits for a motion (safety_motion)
+            or (circle is not None and (circle.collecting or circle.centre is not None))
         )
         return fast if fast.ready(special) else None
 
@@ -404,6 +408,8 @@ class Run(Elements):
             restat(self, record.number)
         if multiaxis and record.subtype is not MotionSubtype.FROM:
             self._multiaxis_special(record, positioning)
+        if self.safety_motions:
+            safety_motion(self, record)  # TSTFLG's SAFETO/SAFETX
         if positioning:
             if self.state.threading.armed:
                 raise NotYetSupported("THREAD on a positioning machine", record.where)

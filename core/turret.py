@@ -15,6 +15,12 @@ it:
 * NEXT: in the next move, the previous point (DPREVP, DPREVM) moved back by the correction,
   with the information block 7 carrying it (never printed or punched).
 
+On an absolute control (option 251 = 1) the positions are the tool's point, the new tool's
+once its T word has called the offset: NOW is a line to the same point with every axis
+stated; NEXT needs nothing more than the shift (the next move's words are the point). The
+corrective move is the lathe's (GELATH, 001 L1244-1250): a multiaxis machine (a mill,
+GEMAXS, L1598-1604) has none, bad input; on a multihead machine (CODE +-14) it is not built.
+
 The tool-length corrections of TOOLNO/LENGTH use the same shift of the previous point
 (:func:`shift_previous`).
 """
@@ -158,16 +164,24 @@ class TurretCorrection:
                 "the number of turret positions, is 0)",
                 where,
             )
+        if machine.multiaxis:
+            raise InputError(
+                f"TURRET/{when}: a turret corrective move belongs to the lathe program "
+                "(GELATH, 001 L1244-1250); a multiaxis machine (option 116) is a milling "
+                "machine (GEMAXS, L1598-1604) and has no turret to correct",
+                where,
+            )
         if self.state.head != 0:
             raise NotYetSupported(f"TURRET/{when} on a multihead machine (CODE +-14)", where)
-        if machine.number_option(251) == 1 or machine.multiaxis:
-            raise NotYetSupported(f"TURRET/{when} on an absolute or multiaxis control", where)
 
     def _now(self, where: SourcePosition, record: int, deltas: list[float]) -> None:
         """The corrective move in CODE -3 blocks, as lines (G code and feed as CODE 0)."""
         state = self.state
         step = state.machine.number_option(14)
         departures = [to_steps(d, step) for d in deltas]
+        if state.machine.number_option(251) == 1:  # absolute positions (modern.py)
+            self._absolute_now(where, record, departures, step)
+            return
         depmax = max(1, round(state.machine.number_option(4) / step))
         count = segment_count(departures, [depmax] * 3)
         if state.max_segments and count > state.max_segments:
@@ -187,3 +201,22 @@ class TurretCorrection:
                 raise
             block.code = Code.TURRET_CORRECTION
             self.output.output(block)
+
+    def _absolute_now(
+        self, where: SourcePosition, record: int, departures: list[int], step: float
+    ) -> None:
+        """An absolute control (option 251 = 1): its positions are the tool's point, the new
+        tool's once the T word has called its offset, so the corrective move is a move to
+        the same point, every axis stated; the turret centre moves by the correction. One
+        block: the control makes the move, option 4's segments are departures' business.
+        It goes out as a line (CODE 0) because only lines take the absolute words (GEOUT's
+        placing), and its departure (the correction) gives its G code and feed time."""
+        reached = tuple(self.state.position.previous[:3])
+        block = Block.motion(Code.LINEAR, record, tuple(departures), reached, step)
+        self.output.modern.forget()  # the new tool's positions: every axis is stated
+        try:
+            self.output.output(block)
+        except FatalError as error:
+            if error.number in (138, 139):
+                raise FatalError(41, error.detail, where) from None
+            raise

@@ -15,7 +15,7 @@ from gecent.core.absent import ABSENT
 from gecent.core.cl.records import Comment
 from gecent.core.cli import main
 from gecent.core.dispatch.post import post
-from gecent.core.errors import FatalError, InputError, NotYetSupported
+from gecent.core.errors import FatalError, InputError
 from gecent.core.macros.dialect import read_raw
 from gecent.core.output.block import Block, Code
 from gecent.core.output.tape import tape_line
@@ -319,8 +319,10 @@ def test_op_none_lifts_the_restrictions(plugins: PluginSet, tmp_path: Path) -> N
 
 def test_safety_on_a_single_head_program_is_not_built(plugins: PluginSet, tmp_path: Path) -> None:
     program = tmp_path / "p.apt"
+    """MACH23 is a single-head mill: SAFETY there is only SAFEGM's multihead record, so it
+    is bad input pointing to COMBIN/2 (it was NotYetSupported until issue 22 wave 4)."""
     program.write_text("PARTNO P\nMACHIN/GECENT,23\nSAFETY/0.5,0,0\nFINI\n")
-    with pytest.raises(NotYetSupported, match="SAFETY statement"):
+    with pytest.raises(InputError, match="COMBIN/2 must come first"):
         post(str(program), plugins)
 
 

@@ -34,6 +34,7 @@ class Post(Protocol):
     cycle: Cycle | None  # the canned cycle in force (CYCFLG, ICYTYP)
     cycle_first_z: float | None
     control_cycles: ControlCycles | None  # the control runs the cycle in force
+    safety_motions: int  # a one-shot SAFETY's motions to come (core/statements/safety.py)
 
     @property
     def machine(self) -> MachineDefinition: ...

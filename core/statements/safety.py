@@ -10,21 +10,26 @@ The routine the run uses is the one the machine's overlay holds (AUXLRY, spec 08
   modal (1) or one-shot (0: "applies only to first motion statement after a safety
   statement", L24633-24644). SAFEGL calls STOREM (L20949-20951): the code waits for the
   next block, the first motion's, where TSTFLG's SAFETO would put it (L38926-38959).
+  One-shot, TSTFLG's SAFETX (called before each motion, as RAPIDX ends a one-shot rapid,
+  L11848-11870) stores the off code TABLEM(40) for the second motion: :func:`safety_motion`,
+  which core/run.py calls before each motion record (the fast path stays off meanwhile).
 * a multiaxis machine (option 116 ≠ 0, which loads GEMAXS, L444), SAFEGX
   (L36554-36611): SAFETY/dx,dy,dz as a three-digit code in DBFSEG(16), one digit per
   axis X, Y, Z: 0 none, 1 +.01 in, 2 -.01, 3 +.10, 4 -.10, 5 +1.0, 6 -1.0, one magnitude
   in a statement; SAFETY/OFF sets DBFSEG(16) to zero "and nothing else is done".
 
-Any other single-head machine has no SAFETY routine (SAFEGM writes a record only the
-multihead merge pass reads).
+Any other single-head machine (a mill, a positioning machine, ...) has no SAFETY of its
+own: its overlay's SAFEGM (GEMILL, "the SAFETY statement for multihead milling machines",
+L36514-36545) writes the withdrawal record only the multihead merge pass reads, so there
+the statement is bad input pointing to COMBIN/2.
 """
 
 from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
-from gecent.core.cl.records import Statement, Word
-from gecent.core.errors import InputError, MachineDefinitionError, NotYetSupported
+from gecent.core.cl.records import Motion, MotionSubtype, Statement, Word
+from gecent.core.errors import InputError, MachineDefinitionError
 from gecent.core.output.block import Block, Code
 
 if TYPE_CHECKING:
@@ -34,6 +39,9 @@ LATHE = 0  # option 132, the machine type (001 L25946-25961)
 # TABLEM cells of the lathe's safety codes (001 L23200-23206, spec 07 §4.3)
 SAFETY_CELLS = {"TURN": 37, "FACE": 38, "BORE": 39, "OFF": 40}
 ONE_SHOT, MODAL = 0, 1  # option 21
+# a one-shot SAFETY's motions still to come when the statement is read: the first carries
+# the mode's code, the second the off code (Post.safety_motions counts them down)
+ONE_SHOT_MOTIONS = 2
 R_REGISTER = 16  # SAFEGX: the code goes into DBFSEG(16)
 # SAFEGX's table: the magnitude's digit for a plus move; the minus move's is one more
 R_DIGITS = {0.01: 1, 0.1: 3, 1.0: 5}
@@ -48,9 +56,15 @@ def single_head_safety(run: Post, statement: Statement) -> None:
     elif machine.multiaxis:
         r_register_safety(run, statement)
     else:
-        # no single-head routine in the manual for a mill or positioning machine: SAFEGM
-        # writes a record only the multihead merge pass reads
-        raise NotYetSupported("SAFETY statement", statement.where)
+        # the manual defines no single-head SAFETY here: the overlay's SAFEGM writes a
+        # record only the multihead merge pass reads (001 L7336-7346, L36514-36545)
+        raise InputError(
+            f"SAFETY on machine {machine.label}, a single-head machine that is neither a lathe "
+            "(option 132 = 0) nor multiaxis (option 116): the manual's SAFETY there is a "
+            "multihead program's withdrawal departures (SAFEGM), so COMBIN/2 must come "
+            "first, before the first motion, on a machine with two heads",
+            statement.where,
+        )
 
 
 def lathe_safety(run: Post, statement: Statement) -> None:
@@ -70,15 +84,23 @@ def lathe_safety(run: Post, statement: Statement) -> None:
             21,
             f"option 21 = {kind:g}: SAFETY is one-shot (0) or modal (1) (001 L24633-24644)",
         )
-    if mode != "OFF" and kind == ONE_SHOT:
-        # SAFETX takes the mode off at the motion after the first (TSTFLG, L38926-38959):
-        # the run has no hook for a statement's state before its motion records yet
-        raise NotYetSupported(
-            f"one-shot SAFETY/{mode} (option 21 = 0: the safety off code at the second "
-            "motion after it, SAFETX)",
-            statement.where,
-        )
-    run.output.store_cell(SAFETY_CELLS[mode], run.warn, statement.where)
+    code = run.output.store_cell(SAFETY_CELLS[mode], run.warn, statement.where)
+    # one-shot: SAFETX's off code at the second motion; a mode whose code the machine
+    # lacks (comment 22) was never turned on, and OFF or a new mode ends the count
+    armed = mode != "OFF" and kind == ONE_SHOT and code is not None
+    run.safety_motions = ONE_SHOT_MOTIONS if armed else 0
+
+
+def safety_motion(run: Post, record: Motion) -> None:
+    """TSTFLG before a motion record while a one-shot SAFETY counts down (SAFETO,
+    SAFETX, 001 L38926-38959): the first motion carries the mode's code (STOREM'd by the
+    statement); before the second, the safety off code TABLEM(40) is stored to ride it. A
+    FROM is no motion here, as for a one-shot rapid."""
+    if record.subtype is MotionSubtype.FROM:
+        return
+    run.safety_motions -= 1
+    if run.safety_motions == 0:
+        run.output.store_cell(SAFETY_CELLS["OFF"], run.warn, record.where)
 
 
 def r_register_safety(run: Post, statement: Statement) -> None:

@@ -23,6 +23,7 @@ from math import acos, degrees, radians, sqrt
 from gecent.core.cl.records import Motion, MotionSubtype, Record, Statement, Word
 from gecent.core.errors import SourcePosition
 from gecent.core.machine.definition import MachineDefinition
+from gecent.core.motion.multiaxis_cycles import tool_axis_legs
 from gecent.core.multiaxis.chain import KinematicChain, unit
 from gecent.core.multiaxis.transform import Kinematics
 from gecent.core.verify.clpath import ArcSpec, Point, _Reader
@@ -87,6 +88,23 @@ class _PoseReader(_Reader):
         if last is not None and last.tip == pose.tip and last.axis == pose.axis:
             return  # a point repeated: the tape does not move for it
         self.poses.append(pose)
+
+    def _holes(self, record: Motion, points: list[Point]) -> None:
+        """Each point a hole drilled along its tool axis, as the post drills it on a
+        multiaxis machine (core/motion/multiaxis_cycles.py): its first leg a cycle entry
+        (any moves may lead there), then the post's own rapid and feed moves."""
+        assert self.cycle is not None
+        self.rapid_once = False
+        axes = self._axes or [self.axis] * len(points)
+        for hole, axis in zip(points, axes, strict=True):
+            if self.cycle_first_z is None:  # (the level along the tool axis, RETURN,0)
+                self.cycle_first_z = sum(a * b for a, b in zip(self.at, axis, strict=True))
+            legs = tool_axis_legs(self.cycle, self.at, hole, axis, self.cycle_first_z)
+            for index, (point, leg) in enumerate(legs):
+                kind = "cycle-entry" if index == 0 else "rapid" if leg.rapid else "feed"
+                self._axes = [axis]
+                self._target((point[0], point[1], point[2]), kind, record, None)
+        self._axes = []
 
     def _statement(self, statement: Statement) -> None:
         super()._statement(statement)
