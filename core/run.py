@@ -29,6 +29,7 @@ from gecent.core.cl.stream import Lookahead
 from gecent.core.cl.vocabulary import vocabulary
 from gecent.core.dispatch.context import Post
 from gecent.core.dispatch.elements import Elements
+from gecent.core.dispatch.holes import CycleHoles
 from gecent.core.dump import state_dump
 from gecent.core.errors import (
     Diagnostic,
@@ -48,15 +49,14 @@ from gecent.core.macros.install import install_macros
 from gecent.core.macros.table import MacroTable
 from gecent.core.motion.circle import CircularMotion
 from gecent.core.motion.control_cycles import ControlCycles
-from gecent.core.motion.cycles import Cycle, cycle_legs
+from gecent.core.motion.cycles import Cycle
 from gecent.core.motion.fastpath import FastLinear
 from gecent.core.motion.guard import (
     DEFAULT_MAX_SEGMENTS,
     CoordinateGuard,
     check_numbers,
-    check_segments,
 )
-from gecent.core.motion.linear import LinearMotion, godlta_delta, path_length
+from gecent.core.motion.linear import LinearMotion, path_length
 from gecent.core.motion.positioning import PositioningMotion
 from gecent.core.motion.rotary import RotaryElement
 from gecent.core.motion.thread import ThreadElement
@@ -80,7 +80,7 @@ if TYPE_CHECKING:
     from gecent.core.motion.multiaxis import MultiaxisMotion
 
 
-class Run(Elements):
+class Run(CycleHoles, Elements):
     """The state of one run and the record dispatch (spec 02 §7)."""
 
     def __init__(
@@ -457,75 +457,6 @@ class Run(Elements):
             raise NotYetSupported("THREAD on a multiaxis machine", record.where)
         if self.state.sfm.active:
             raise NotYetSupported("SFM on a multiaxis machine", record.where)
-
-    def _multiaxis_holes(self, record: Motion) -> None:
-        """CYCLGX: each point a hole drilled along its tool axis, through the transform
-        (core/motion/multiaxis_cycles.py)."""
-        from gecent.core.motion.multiaxis_cycles import MultiaxisHoles
-
-        assert self.cycle is not None
-        holes = MultiaxisHoles(self.state, self.output, self.rapid, self.multiaxis)
-        self.cycle_first_z = holes.record(record, self.cycle, self.cycle_first_z)
-
-    def _cycle_points(self, record: Motion) -> None:
-        """Each point of a record under CYCLE is a hole: its moves go through the rapid and
-        linear elements as ordinary one-point records with the record's number."""
-        assert self.cycle is not None
-        position = self.state.position
-        tx, ty, tz = position.translation
-        for point in record.points:
-            previous = position.previous_part
-            at = (previous[0] - tx, previous[1] - ty, previous[2] - tz)
-            if record.subtype is MotionSubtype.GODLTA:
-                delta = godlta_delta(point)
-                hole = (at[0] + delta[0], at[1] + delta[1], at[2] + delta[2])
-            else:
-                hole = (point[0], point[1], point[2])
-            if self.cycle_first_z is None:
-                self.cycle_first_z = at[2]
-            if self.control_cycles is not None:
-                self.circle.select_plane(0, record.number)  # the control drills along Z
-                feed = self.state.feed
-                feed.rapid_requested = False  # the control positions at rapid itself
-                if feed.rapid_mode:
-                    self.rapid.leave()
-                if self.macros is not None:
-                    self.macros.hooks.cycle(record, at, hole, self.cycle_first_z)
-                else:
-                    self.control_cycles.hole(self.cycle, record.number, hole, self.cycle_first_z)
-                continue
-            self.simulated_hole(record, at, hole)
-
-    def simulated_hole(
-        self,
-        record: Motion,
-        at: tuple[float, float, float],
-        hole: tuple[float, float, float],
-    ) -> None:
-        """A hole by rapid and feed moves (core/motion/cycles.py)."""
-        cycle = self.cycle
-        assert cycle is not None and self.cycle_first_z is not None
-        if cycle.kind == "DEEP" and cycle.step:
-            pecks = int(min(abs(cycle.depth / cycle.step), 1e18))
-            check_segments(pecks, self.state.max_segments, record.where, "deep-hole cycle")
-        for leg in cycle_legs(cycle, at, hole, self.cycle_first_z):
-            if leg.dwell:
-                block = self.output.dwell(leg.dwell)
-                block.record = record.number
-                self.output.output(block)
-            code = None if leg.m_code_cell is None else self.machine.m_code(leg.m_code_cell)
-            if code is not None:
-                self.output.store_m(code)
-            self._leg(record, leg.point, leg.rapid)
-
-    def _leg(self, record: Motion, point: tuple[float, float, float], rapid: bool) -> None:
-        leg = Motion(record.file, record.line, record.number, MotionSubtype.GOTO, (point,))
-        feed = self.state.feed
-        if rapid:
-            self.rapid.request()
-        if feed.rapid_requested or feed.rapid_mode:
-            self.rapid.motion(path_length(self.state.position, leg))
-        self.motion.record(leg)
 
 
 def _units(run: Post, statement: Statement) -> None:

@@ -14,7 +14,7 @@ from __future__ import annotations
 from collections.abc import Callable
 
 from gecent.core.cl.records import Statement, Word
-from gecent.core.errors import Diagnostic, InputError, MachineDefinitionError, NotYetSupported
+from gecent.core.errors import Diagnostic, InputError, MachineDefinitionError
 from gecent.core.output.block import Block, Code
 from gecent.core.output.element import OutputElement
 from gecent.core.state import SPINDLE_M, PostState
@@ -26,14 +26,19 @@ HOLDING = {"ORIENT": ORIENT_CELL, "LOCK": LOCK_CELL}
 
 
 def check_rpm_words(statement: Statement, words: list[str]) -> None:
-    """An RPM SPINDL takes RPM, CLW, CCLW, RANGE, ON and OFF; DWELL is the manual's but
-    not built; any other word is not a SPINDL word (the manual's "IMPROPER FORMAT,
-    STATEMENT SKIPPED", an input error here as elsewhere in gecent)."""
+    """An RPM SPINDL takes RPM, CLW, CCLW, RANGE, ON and OFF; DWELL is the manual's word
+    but it defines no code or time for it (bad input, with the reason); any other word is
+    not a SPINDL word (the manual's "IMPROPER FORMAT, STATEMENT SKIPPED", an input error
+    here as elsewhere in gecent)."""
     for word in words:
         if word == "DWELL":
-            raise NotYetSupported(
+            # the manual gives the word (minor 197) and a flag (IDWLFL: "DBFSEG(2)
+            # contains the spindle-dwell G code", which POSMOV leaves for the next move)
+            # but no TABLEG cell for that G code and no time: a tape gecent cannot make
+            raise InputError(
                 "SPINDL/DWELL: the manual names a spindle-dwell G code (IDWLFL, 001 "
-                "L17348-17352) but not where it is or what it does",
+                "L17348-17352, L34952-34955) but gives no G code cell and no time for it; "
+                "program the dwell with DELAY after the SPINDL",
                 statement.where,
             )
         if word not in RPM_WORDS:

@@ -41,7 +41,7 @@ from collections.abc import Callable
 from dataclasses import replace
 
 from gecent.core.cl.records import Statement, Word
-from gecent.core.errors import Diagnostic, InputError, NotYetSupported, SourcePosition
+from gecent.core.errors import Diagnostic, InputError, SourcePosition
 from gecent.core.output.block import Block, Code
 from gecent.core.output.element import OutputElement
 from gecent.core.output.modern import (
@@ -217,7 +217,14 @@ class ToolElement:
         if "CLW" in words and "CCLW" in words:
             raise InputError(f"{statement.major} takes one of CLW and CCLW", where)
         if machine.number_option(1) != 0 and positions > 1:
-            raise NotYetSupported(f"{statement.major} on a positioning machine", where)
+            # the manual's TURRET is the contouring lathe's ("the TURRET statement
+            # (contouring)", option 96, 001 L25532); a positioning machine turns its
+            # turret with ROTATE/TURRET (ROTUR)
+            raise InputError(
+                f"{statement.major}/tool,position is the contouring lathe's statement (option "
+                "96); a positioning machine turns its turret with ROTATE/TURRET",
+                where,
+            )
         numbers = _plain_numbers(statement)
         offset = _value_after(statement, "OFSETL")
         # a turret's distances a, b may be any length; the tool and position are counts

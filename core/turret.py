@@ -19,7 +19,9 @@ On an absolute control (option 251 = 1) the positions are the tool's point, the 
 once its T word has called the offset: NOW is a line to the same point with every axis
 stated; NEXT needs nothing more than the shift (the next move's words are the point). The
 corrective move is the lathe's (GELATH, 001 L1244-1250): a multiaxis machine (a mill,
-GEMAXS, L1598-1604) has none, bad input; on a multihead machine (CODE +-14) it is not built.
+GEMAXS, L1598-1604) has none, bad input. On a multihead machine each head's run has its
+own correction (its own distances), its CODE -3 blocks go to the head's scratch tape, and
+the merge pass pairs one with the other head's motion (CODE +-14, core/multihead/gmout.py).
 
 The tool-length corrections of TOOLNO/LENGTH use the same shift of the previous point
 (:func:`shift_previous`).
@@ -30,7 +32,7 @@ from __future__ import annotations
 from collections.abc import Callable
 from typing import TYPE_CHECKING
 
-from gecent.core.errors import Diagnostic, FatalError, InputError, NotYetSupported, SourcePosition
+from gecent.core.errors import Diagnostic, FatalError, InputError, SourcePosition
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.motion.rounding import to_steps
 from gecent.core.motion.segments import segment_count, segment_place, segments
@@ -171,8 +173,6 @@ class TurretCorrection:
                 "machine (GEMAXS, L1598-1604) and has no turret to correct",
                 where,
             )
-        if self.state.head != 0:
-            raise NotYetSupported(f"TURRET/{when} on a multihead machine (CODE +-14)", where)
 
     def _now(self, where: SourcePosition, record: int, deltas: list[float]) -> None:
         """The corrective move in CODE -3 blocks, as lines (G code and feed as CODE 0)."""

@@ -19,7 +19,7 @@ from pathlib import Path
 import pytest
 from gecent.core.dispatch.post import post
 from gecent.core.errors import InputError, NotYetSupported
-from gecent.core.feed.accel import (
+from gecent.core.feed.servo import (
     arc_feed_limit,
     bisector_slope,
     bisector_time,

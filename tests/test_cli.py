@@ -117,13 +117,12 @@ def test_unsupported_statement_stops_without_output(
 ) -> None:
     monkeypatch.chdir(tmp_path)
     source = tmp_path / "u.apt"
-    # (SAFETY on MACH23 was the example until it became bad input, issue 22 wave 4)
-    source.write_text("PARTNO X\nMACHIN/GECENT,23\nSPINDL/DWELL\nFINI\n")
+    # (SAFETY on MACH23 was the example until it became bad input, issue 22 wave 4;
+    # SPINDL/DWELL until it became bad input too, wave 5: the manual gives it no code)
+    source.write_text("PARTNO X\nMACHIN/GECENT,23\nROTATE/TURRET,1\nFINI\n")
     code, _, err = run("post", str(source))
     assert code == 3
-    assert err.strip().startswith(
-        f"{source}:3 (record 3): error: not yet supported: SPINDL/DWELL: the manual names"
-    )
+    assert err.strip().startswith(f"{source}:3 (record 3): error: not yet supported: ROTATE/TURRET")
     assert not (tmp_path / "u.tape").exists() and not (tmp_path / "u.lis").exists()
     assert [p.name for p in tmp_path.iterdir()] == ["u.apt"]  # no temporary left either
 

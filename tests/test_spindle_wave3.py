@@ -233,8 +233,9 @@ def test_words_spindl_does_not_take(statement: str) -> None:
         post([statement], mach04())
 
 
-def test_spindl_dwell_is_named_as_not_built() -> None:
-    with pytest.raises(NotYetSupported, match="SPINDL/DWELL"):
+def test_spindl_dwell_is_bad_input_naming_why() -> None:
+    # was NotYetSupported; wave 5 decided it: the manual gives no code or time for it
+    with pytest.raises(InputError, match=r"SPINDL/DWELL.*no G code cell and no time"):
         post(["SPINDL/100,DWELL"], mach04())
 
 

@@ -362,10 +362,31 @@ def _parse(statement: Statement) -> tuple[int, bool, float, int | None]:
     words = [a.name for a in statement.args if isinstance(a, Word)]
     numbers = statement.numbers()
     device = words[0] if words else ""
-    if device in ("TORCH", "MAGAZINE", "TURRET", "INDEXER"):
+    if device == "TORCH":
+        # reached only from the multiaxis element (the other rotary elements turn a torch
+        # themselves): ROTORC turns a two-axis flame cutter's torch (GEFLAM, option 132 =
+        # 4, 001 L433, L36260-36302); under GEMAXS (option 116, L443) the rotary axes
+        # follow the tool axis, which would undo a torch turned beside them
+        raise InputError(
+            "ROTATE/TORCH on a multiaxis machine: its rotary axes follow the tool axis of "
+            "the GOTO records; turn the torch by the tool axis (ROTORC is the two-axis "
+            "flame cutter's)",
+            statement.where,
+        )
+    if device in ("MAGAZINE", "TURRET", "INDEXER"):
         raise NotYetSupported(f"ROTATE/{device}", statement.where)
     if device not in ("TABLE", "HEAD"):
         raise InputError("ROTATE expects TABLE or HEAD first", statement.where)
+    speed = [w for w in words[1:] if w in ("OFF", "RPM", "RANGE")]
+    if device == "TABLE" and speed:
+        # ROTABL hands a speed to TABSPD, a table that spins on its M codes (TABLEM 83,
+        # 84, 50), and a move to ROTABI/ROTABA (001 L36012-36053, L38089-38171); the manual
+        # gives no order or meaning for a table both spun and positioned by one statement
+        raise InputError(
+            f"ROTATE/TABLE takes a move (INCR or ATANGL) or a speed (OFF, CLW or CCLW with "
+            f"RPM, RANGE), not both ({speed[0]} with a move): give them as two statements",
+            statement.where,
+        )
     unbuilt = [w for w in words[1:] if w not in ("INCR", "ATANGL", "CLW", "CCLW")]
     if unbuilt:
         raise NotYetSupported(f"ROTATE/{device},{unbuilt[0]}", statement.where)

@@ -207,9 +207,22 @@ class MergePass:
                 tape.put_back(block)  # the next OP: the sequencing reads it again
                 return
             if mergeable(block):
+                if block.code is Code.TURRET_CORRECTION and not self._keeps_whole_moves:
+                    raise NotYetSupported(
+                        "a turret corrective move (CODE +-14) in a combined section whose "
+                        "moves are split to equal times (one feedrate register, option 139 "
+                        f"= 0) or share a common axis (option 155), CL record {block.record}"
+                    )
                 yield block
             else:
                 self.out.alone(block)
+
+    @property
+    def _keeps_whole_moves(self) -> bool:
+        """Two feedrate registers and no common axis: each move goes out whole, alone or
+        beside one of the other head's (a correction's pieces would need their own
+        points, which the split does not keep)."""
+        return self.two_feed_registers and self.common_axis is None
 
     def _by_summed_times(self, moves: list[Iterator[Block]]) -> list[Block | None] | None:
         """Two feedrate registers (001 L2040-2075): the first moves together, then always

@@ -1,7 +1,9 @@
 """GMOUT, the output of the merge pass (manual §3.4.8.2.2, 001 L8404-8792): a head's block
 alone goes through GEOUT with that head's registers; two blocks cut together become one
 tape block, head 1's words then head 2's before one end of block (GMHBUF 1-20 and 21-40,
-001 L9812-9882), with CODE +17 when head 1 is the primary head, -17 when head 2 is.
+001 L9812-9882), with CODE +17 when head 1 is the primary head, -17 when head 2 is; CODE
++14 (-14) when head 1's (head 2's) half is a turret corrective move, cut as a line beside
+the other head's regular motion (001 L7676-7677, L9357-9364).
 
 Registers both heads name with the same letter are one register on the control (the
 spindle of a two-head lathe, a single G or F register): a combined block carries one
@@ -28,7 +30,9 @@ from gecent.core.output.element import CIRCLE_CODES, OutputElement
 from gecent.core.output.sinks import Sinks
 from gecent.core.state import PostState
 
-MERGEABLE = frozenset({Code.LINEAR, Code.DWELL}) | CIRCLE_CODES
+# a turret corrective move is cut as a line (001 L7676-7677): beside the other head's move
+# it makes a CODE +-14 block (001 L9357-9364)
+MERGEABLE = frozenset({Code.LINEAR, Code.DWELL, Code.TURRET_CORRECTION}) | CIRCLE_CODES
 SHARABLE_CELLS = (1, 2, 11, 12, 13, 14, 17, *range(21, 31))
 # option 156: which (head 1, head 2) interpolation pairs the control can cut together
 # (L = linear or dwell, C = circular; 001 L26218-26228)
@@ -220,6 +224,8 @@ class GMOUT:
         """The control can cut the pair together (option 156, 001 L26218-26228); two
         circles need a G register per head (option 152, 001 L8786-8788)."""
         modes = (_mode(first), _mode(second))
+        if first.code is Code.TURRET_CORRECTION and second.code is Code.TURRET_CORRECTION:
+            return False  # CODE +-14 pairs a correction with the other head's regular motion
         if modes == ("C", "C") and self.one_g_register:
             return False
         return modes in self.pairs
@@ -312,6 +318,10 @@ class GMOUT:
             for converter in self.heads:  # the one register holds the primary's F now
                 converter.element.words.previous_f = ABSENT
         code = Code.MULTIHEAD_1 if primary == 1 else Code.MULTIHEAD_2
+        if first.code is Code.TURRET_CORRECTION:  # +14: head 1 corrects (001 L9357-9364)
+            code = Code.MULTIHEAD_TURRET_1
+        elif second.code is Code.TURRET_CORRECTION:
+            code = Code.MULTIHEAD_TURRET_2
         block = Block(code, first.record if first.record is not None else second.record)
         block.cells[15] = float(int(code))
         block.halves = (first, second)

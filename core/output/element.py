@@ -5,6 +5,7 @@ OUTPUT completes a block: the CODE, the sequence number (negative under OPSKIP),
 the dimension G code (SELG) and the feed (FEDIPM, or a rapid marker), then the pending spindle
 command and M code, which ride in the next block output. The conversion then turns the feed
 into the control's command (CONTUR, core/feed/contour.py) and formats each register.
+The sequence number and GEOUT's conversion are core/output/geout.py.
 """
 
 from __future__ import annotations
@@ -59,6 +60,7 @@ from gecent.core.output.codes import (
     UNSHUFFLED as UNSHUFFLED,
 )
 from gecent.core.output.dwells import Dwells
+from gecent.core.output.geout import GeoutConversion
 from gecent.core.output.marks import stand_in
 from gecent.core.output.modern import (
     CL_PLANES,
@@ -82,7 +84,7 @@ NON_MOTION_DWELL = frozenset({Code.NONMOTION, Code.G_ONLY, Code.END})
 NO_MOVE_FOR_S_T = "NO MOTION BLOCK FOLLOWED THE LAST SPINDL OR TOOLNO: ITS S OR T IS NOT OUTPUT"
 
 
-class OutputElement(ModernProgram, OtherBlocks, Dwells):
+class OutputElement(ModernProgram, OtherBlocks, Dwells, GeoutConversion):
     def __init__(self, state: PostState) -> None:
         machine = state.machine
         self.state = state
@@ -280,39 +282,6 @@ class OutputElement(ModernProgram, OtherBlocks, Dwells):
         if self.merge_into_motion and (pending.tool is not ABSENT or pending.spindle is not ABSENT):
             self.diagnostics.append(Diagnostic(NO_MOVE_FOR_S_T, None))
 
-    def _sequence_number(self, block: Block) -> float | Absent:
-        """N: the CL record number (option 143 = 0), or the SEQNO series, or none after
-        SEQNO/OFF; negative under OPSKIP; above SEQLIM, N modulus SEQLIM (001 L9117-9126,
-        L37337-37373)."""
-        state = self.state
-        numbering = state.numbering
-        if numbering.off:
-            return ABSENT
-        if numbering.series is not None and block.punched:
-            sequence, increment = numbering.series
-            numbering.series = (sequence + increment, increment)
-        else:
-            sequence = block.record if block.record is not None else state.sequence
-        if sequence > self.sequence_limit:
-            if self.modern.frame and numbering.series is not None:
-                # a program for a modern control never repeats an N: past the register's
-                # digits its blocks go on without one
-                numbering.off = True
-                self.diagnostics.append(
-                    Diagnostic(
-                        f"BLOCK NUMBERS PASS N{self.sequence_limit}: THE REST OF THE PROGRAM "
-                        "HAS NO N WORDS",
-                        None,
-                    )
-                )
-                return ABSENT
-            sequence %= self.sequence_limit
-        if numbering.unrepeated and block.punched:
-            if sequence == numbering.last:
-                return ABSENT  # option 143 = -1: the redundant N is suppressed
-            numbering.last = sequence
-        return float(-sequence if state.skipping else sequence)
-
     def flush_m(self, record: int | None = None) -> None:
         """STOREM(130): a waiting M code goes out in a block of its own now."""
         if self.state.pending.m_code is not ABSENT:
@@ -361,11 +330,6 @@ class OutputElement(ModernProgram, OtherBlocks, Dwells):
     @emit.setter
     def emit(self, sink: Callable[[Block], None]) -> None:
         self.sink = sink
-
-    def number_and_emit(self, block: Block) -> None:
-        """N, then GEOUT: the end of OUTPUT for a block A/D lets go."""
-        block.cells[1] = self._sequence_number(block)
-        self._emit(block)
 
     def _motion(self, block: Block) -> None:
         assert block.steps is not None
@@ -457,56 +421,6 @@ class OutputElement(ModernProgram, OtherBlocks, Dwells):
             self.assumed_feed = True
             self.diagnostics.append(Diagnostic("OPTION FEEDRATE ASSUMED."))
             feed.ipm = assumed
-
-    # -- GEOUT: words and the tape line (flow chart 12) ----------------------------------
-
-    def _emit(self, block: Block) -> None:
-        if self.dump_only or block.code is Code.FROM:  # FROM: printed, never punched
-            self.emit(block)
-            return
-        self.convert(block)
-        self.emit(block)
-
-    def convert(self, block: Block) -> None:
-        """GEOUT's conversion: SHUFFL, the register words with their redundancy tests and
-        the tape line (flow chart 12)."""
-        modern = self.modern
-        placed = False
-        if modern.absolute and block.position is not None and block.code in PLACED_CODES:
-            # a circle states both axes of its CL plane
-            keep = (
-                () if block.code not in CIRCLE_CODES else CL_PLANES[abs(int(block.code)) - 10][:2]
-            )
-            modern.place(block, block.position, keep)
-            if block.angles is not None:
-                modern.place_rotary(block, block.angles, self.rotary_step)
-            placed = True
-        if block.code not in UNSHUFFLED:
-            self.words.shuffle_block(block)
-        code = block.code
-        motion = code in MOVING_CODES
-        words = self.words.words(
-            block,
-            suppress=motion,
-            sequence=self.state.sequence,
-            absolute=placed or code in ABSOLUTE_CODES,
-        )
-        if self.register_hook is not None:
-            words = self.register_hook(block, words)
-        if modern.active:
-            if block.cells[13] is not ABSENT:
-                modern.forget()  # a tool change: the next move states every axis
-                self.words.previous_g = ABSENT  # and its motion G
-            if block.cells[14] is not ABSENT and block.cells[14] == self.end_code:
-                modern.ended = True
-            elif motion:
-                modern.ended = False
-        if not motion and block.cells[2] is not ABSENT:
-            self.words.previous_g = ABSENT  # a G04 or other G came between: repeat the motion G
-        block.words = tuple((location, printed) for location, _, printed, _ in words)
-        if block.punched:
-            punch = self.separator.join(letter + punched for _, letter, _, punched in words)
-            block.punch = "/" + punch if block.skipped else punch
 
 
 def _spindle_block(block: Block, state: PostState) -> bool:
