@@ -14,9 +14,13 @@ core/motion/cycles.py drills them on a three-axis machine, but along the tool ax
   through the multiaxis element (GOLINE, the transform class or the kinematic chain);
 * RETURN,0 goes back to the level along the tool axis the cycle's first hole started from.
 
-A hole whose tool axis is not the one the tool stands at would turn the tool on the way to
-it, next to the part: that is a five-axis hole pattern, not yet built (3+2 holes, along a
-fixed tool axis, are). The tool is positioned along the new axis by an ordinary move first.
+A hole whose tool axis is not the one the tool stands at (a five-axis hole pattern, as NX's
+5-axis drilling writes it) is reached as a commercial post reaches it: the tool, at the
+clearance level along the old axis after the hole before, goes at rapid to the new hole's
+clearance point along the NEW axis (the level it leaves the hole at: R, RETURN's level),
+the kinematic chain turning the rotary axes on the way, and drills along the new axis from
+there. OUT (which stays at the bottom) and IN (which withdraws along the axis in force)
+would turn the tool inside a hole: not yet supported.
 """
 
 from __future__ import annotations
@@ -27,7 +31,7 @@ from math import isfinite, sqrt
 from gecent.core.cl.records import Motion, MotionSubtype
 from gecent.core.errors import InputError, NotYetSupported
 from gecent.core.feed.rapid import RapidTraverse
-from gecent.core.motion.cycles import Cycle, Leg, cycle_legs
+from gecent.core.motion.cycles import CYCLE_TYPES, Cycle, Leg, cycle_legs
 from gecent.core.motion.guard import check_segments
 from gecent.core.motion.linear import godlta_delta, path_length
 from gecent.core.motion.multiaxis import MultiaxisMotion
@@ -65,23 +69,46 @@ def hole_frame(axis: Vector) -> tuple[Vector, Vector, Vector]:
     return e1, e2, axis
 
 
+def turns_the_tool(axis: Vector, standing: Vector) -> bool:
+    """True when a hole's unit tool axis is not the one the tool stands at."""
+    return max(abs(a - s) for a, s in zip(axis, standing, strict=True)) > SAME_AXIS
+
+
 def tool_axis_legs(
-    cycle: Cycle, at: Vector, hole: Vector, axis: Vector, first_level: float
+    cycle: Cycle,
+    at: Vector,
+    hole: Vector,
+    axis: Vector,
+    first_level: float,
+    standing: Vector | None = None,
 ) -> list[tuple[tuple[float, ...], Leg]]:
     """The moves that drill ``hole`` (its top, a CL point) along the unit tool ``axis`` from
     ``at``: each leg of core/motion/cycles.py worked out in the hole's frame, with its end
     carried back to a CL point with the tool axis (x, y, z, i, j, k). ``first_level``: the
-    level along the axis the cycle started from (RETURN,0)."""
+    level along the axis the cycle started from (RETURN,0). ``standing``: the tool axis the
+    tool is at; when the hole's differs, the first leg is a rapid to the hole's clearance
+    point along the new axis (where the hole's way out ends), the tool turning on the way."""
     e1, e2, _ = hole_frame(axis)
 
     def framed(p: Vector) -> Vector:
         return (_dot(p, e1), _dot(p, e2), _dot(p, axis))
 
+    def carried(p: tuple[float, float, float]) -> tuple[float, ...]:
+        a, b, c = p
+        return (*(a * e1[n] + b * e2[n] + c * axis[n] for n in range(3)), *axis)
+
+    along = replace(cycle, axis=2)
+    start, top = framed(at), framed(hole)
     legs = []
-    for leg in cycle_legs(replace(cycle, axis=2), framed(at), framed(hole), first_level):
-        a, b, c = leg.point
-        part = tuple(a * e1[n] + b * e2[n] + c * axis[n] for n in range(3))
-        legs.append(((*part, *axis), leg))
+    if standing is not None and turns_the_tool(axis, standing):
+        if CYCLE_TYPES[cycle.kind][0] in ("stay", "withdraw"):
+            raise ValueError(f"CYCLE/{cycle.kind} cannot turn the tool between holes")
+        # the clearance point: where this hole's way out ends (its last leg), R or RETURN's
+        clearance = cycle_legs(along, top, top, first_level)[-1].point
+        legs.append((carried(clearance), Leg(clearance, rapid=True)))
+        start = clearance
+    for leg in cycle_legs(along, start, top, first_level):
+        legs.append((carried(leg.point), leg))
     return legs
 
 
@@ -120,34 +147,37 @@ class MultiaxisHoles:
                 axis = self._axis(record, point, standing)
             if first_level is None:
                 first_level = _dot(at, axis)
-            self._drill(record, cycle, axis, at, hole, first_level)
+            if turns_the_tool(axis, standing) and CYCLE_TYPES[cycle.kind][0] in (
+                "stay",
+                "withdraw",
+            ):
+                raise NotYetSupported(
+                    f"CYCLE/{cycle.kind} on a hole whose tool axis ({axis[0]:.6g}, "
+                    f"{axis[1]:.6g}, {axis[2]:.6g}) is not the one the tool stands at "
+                    f"({standing[0]:.6g}, {standing[1]:.6g}, {standing[2]:.6g}): the tool "
+                    "would turn at the bottom of a hole",
+                    record.where,
+                )
+            self._drill(record, cycle, axis, standing, at, hole, first_level)
         assert first_level is not None
         return first_level
 
     def _axis(self, record: Motion, point: tuple[float, ...], standing: Vector) -> Vector:
-        """The hole's tool axis, a unit vector; it must be the one the tool stands at."""
+        """The hole's tool axis, a unit vector (``standing`` when the point gives none)."""
         if len(point) < 6:
             return standing
         i, j, k = point[3:6]
         length = sqrt(i * i + j * j + k * k)
         if length == 0.0 or not isfinite(length):
             raise InputError(f"the tool axis {i:g}, {j:g}, {k:g} has no direction", record.where)
-        axis: Vector = (i / length, j / length, k / length)
-        if max(abs(a - s) for a, s in zip(axis, standing, strict=True)) > SAME_AXIS:
-            raise NotYetSupported(
-                f"a canned cycle hole whose tool axis ({axis[0]:.6g}, {axis[1]:.6g}, "
-                f"{axis[2]:.6g}) is not the one the tool stands at ({standing[0]:.6g}, "
-                f"{standing[1]:.6g}, {standing[2]:.6g}): turning the tool between holes "
-                "(position the tool along the hole's axis before it)",
-                record.where,
-            )
-        return axis
+        return (i / length, j / length, k / length)
 
     def _drill(
         self,
         record: Motion,
         cycle: Cycle,
         axis: Vector,
+        standing: Vector,
         at: Vector,
         hole: Vector,
         first_level: float,
@@ -156,7 +186,7 @@ class MultiaxisHoles:
             pecks = int(min(abs(cycle.depth / cycle.step), 1e18))
             check_segments(pecks, self.state.max_segments, record.where, "deep-hole cycle")
         machine = self.state.machine
-        for point, leg in tool_axis_legs(cycle, at, hole, axis, first_level):
+        for point, leg in tool_axis_legs(cycle, at, hole, axis, first_level, standing):
             if leg.dwell:
                 block = self.output.dwell(leg.dwell)
                 block.record = record.number

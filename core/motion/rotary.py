@@ -32,7 +32,12 @@ from gecent.core.cl.records import Statement, Word
 from gecent.core.errors import Diagnostic, InputError, NotYetSupported
 from gecent.core.machine.definition import ROTARY_CELLS, MachineDefinition
 from gecent.core.motion.gcode import RotaryCodes
-from gecent.core.motion.rotary_devices import TableOutput, TableSpeed, is_table_speed
+from gecent.core.motion.rotary_devices import (
+    TableOutput,
+    TableSpeed,
+    is_table_speed,
+    rotate_turret,
+)
 from gecent.core.motion.rounding import to_steps
 from gecent.core.motion.segments import segment_place
 from gecent.core.output.block import Block, Code
@@ -327,7 +332,10 @@ class RotateRequest:
 
 def parse_rotate(statement: Statement, machine: MachineDefinition) -> RotateRequest:
     """ROTATE/TABLE|HEAD with option 206: the way a CLW (and so INCR's default) turns the
-    table, +1 CLW, -1 CCLW (001 L26616-26626); a head is not a table and keeps its CLW."""
+    table, +1 CLW, -1 CCLW (001 L26616-26626); a head is not a table and keeps its CLW.
+    ROTATE/TURRET goes by the machine's type (rotate_turret)."""
+    if [a.name for a in statement.args if isinstance(a, Word)][:1] == ["TURRET"]:
+        rotate_turret(statement, machine)
     cell, absolute, value, direction = _parse(statement)
     if cell == TABLE_CELL and machine.number_option(206) == -1:
         if direction is None and not absolute:
@@ -373,7 +381,15 @@ def _parse(statement: Statement) -> tuple[int, bool, float, int | None]:
             "flame cutter's)",
             statement.where,
         )
-    if device in ("MAGAZINE", "TURRET", "INDEXER"):
+    if device == "TURRET":
+        # reached only from the multiaxis element (parse_rotate checks the machine first):
+        # a multiaxis machine is a contouring one, with no spindle or drafting turret
+        raise InputError(
+            "ROTATE/TURRET on a multiaxis machine: ROTATE/TURRET turns a positioning "
+            "machine's spindle turret (ROTUR) or a drafting machine's turret (ROTDRF)",
+            statement.where,
+        )
+    if device in ("MAGAZINE", "INDEXER"):
         raise NotYetSupported(f"ROTATE/{device}", statement.where)
     if device not in ("TABLE", "HEAD"):
         raise InputError("ROTATE expects TABLE or HEAD first", statement.where)

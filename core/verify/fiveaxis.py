@@ -92,14 +92,16 @@ class _PoseReader(_Reader):
     def _holes(self, record: Motion, points: list[Point]) -> None:
         """Each point a hole drilled along its tool axis, as the post drills it on a
         multiaxis machine (core/motion/multiaxis_cycles.py): its first leg a cycle entry
-        (any moves may lead there), then the post's own rapid and feed moves."""
+        (any moves may lead there: on a new tool axis the rapid that turns the tool to the
+        hole's clearance point), then the post's own rapid and feed moves."""
         assert self.cycle is not None
         self.rapid_once = False
         axes = self._axes or [self.axis] * len(points)
         for hole, axis in zip(points, axes, strict=True):
             if self.cycle_first_z is None:  # (the level along the tool axis, RETURN,0)
                 self.cycle_first_z = sum(a * b for a, b in zip(self.at, axis, strict=True))
-            legs = tool_axis_legs(self.cycle, self.at, hole, axis, self.cycle_first_z)
+            standing = self.poses[-1].axis if self.poses else (0.0, 0.0, 1.0)
+            legs = tool_axis_legs(self.cycle, self.at, hole, axis, self.cycle_first_z, standing)
             for index, (point, leg) in enumerate(legs):
                 kind = "cycle-entry" if index == 0 else "rapid" if leg.rapid else "feed"
                 self._axes = [axis]
