@@ -17,28 +17,11 @@ from gecent.core.cli import main
 from gecent.core.plugins import PluginSet
 from gecent.core.verify.check import verify
 
+from .test_cycles_wave3 import FIVE_AXIS_HOLES
+
 needs_rs274 = pytest.mark.skipif(shutil.which("rs274") is None, reason="rs274 is not installed")
 
-HOLES = """PARTNO HOLES
-UNITS/MM
-MULTAX
-LOADTL/1,LENGTH,100
-SPINDL/1000,CLW
-FROM/0,0,100,0,0,1
-RAPID
-GOTO/10,0,50,0,0,1
-CYCLE/DRILL,DEPTH,5,CLEAR,2,MMPM,100
-GOTO/10,0,0,0,0,1
-GOTO/20,0,0
-CYCLE/OFF
-RAPID
-GOTO/20,0,50,0.7071068,0,0.7071068
-CYCLE/DEEP,DEPTH,6,STEP,2,CLEAR,2,MMPM,100,RETURN,0
-GOTO/20,0,0,0.7071068,0,0.7071068
-GOTO/20,10,0,0.7071068,0,0.7071068
-CYCLE/OFF
-FINI
-"""
+HOLES = FIVE_AXIS_HOLES  # the program tests/test_cycles_wave3.py posts and checks by hand
 
 MODES = [
     ("linuxcnc-5axis-ac", 0),

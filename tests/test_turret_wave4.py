@@ -64,9 +64,8 @@ def test_next_on_an_absolute_control_states_the_tool_point(tmp_path: Path) -> No
     assert lines[lines.index("N8 T0303") + 1] == "N9 G01 X50. Z-30."
 
 
+@pytest.mark.skipif(shutil.which("rs274") is None, reason="rs274 is not installed")
 def test_a_corrected_absolute_tape_verifies(plugins: PluginSet, tmp_path: Path) -> None:
-    if shutil.which("rs274") is None:
-        pytest.skip("rs274 (LinuxCNC's interpreter) is not installed")
     code, output, tape, source = post(tmp_path, LATHE_PROGRAM, "fanuc-lathe")
     assert code == 0, output
     result = verify(str(tape), str(source), plugins, None, 0.001)

@@ -37,7 +37,8 @@ from math import acos, atan2, ceil, cos, hypot, pi, sin, sqrt, tau
 
 import numpy as np
 from gecent.core.errors import Diagnostic, FatalError, InputError, NotYetSupported
-from gecent.core.motion.circle import PLANES, Arc, CircularMotion
+from gecent.core.motion.arc_pieces import Arc
+from gecent.core.motion.circle import PLANES, CircularMotion
 from gecent.core.motion.multiaxis import NOT_UNIT, UNIT_TOLERANCE, MultiaxisMotion, PartPoint
 from gecent.core.motion.quadrants import arc_sweep, goes_linear, quadrant_crossings
 from gecent.core.motion.rounding import to_steps

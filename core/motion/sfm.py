@@ -40,6 +40,8 @@ from gecent.core.motion.ladder import SpeedLadder
 from gecent.core.motion.rounding import to_steps
 from gecent.core.state import Feed
 
+Steps = tuple[int, ...]
+
 RPM_PER_SFM_INCH = 12.0 / (2.0 * pi)  # S = 12 SFM / (2 pi R): 1.90986 (the manual's "1.9")
 _SPEED_EXACT = 1e-6  # RPM: a speed this close to another is the same speed
 _RADIUS_EXACT = 1e-9  # inches: a shift radius this close to the end is the end
@@ -227,15 +229,39 @@ def surface_cuts(
         fixed = plan(surface_feet, fixed_radius, fixed_radius, ladder)
         speed = fixed.pieces[0].speed if fixed.pieces else None
         return SurfacePath((Cut(finish, speed),), (fixed.end,))
-    stretches = [(begin, finish)]
-    a, b = begin[radius_axis], finish[radius_axis]
+    axis = radius_axis
+
+    def along(first: Steps, last: Steps) -> Callable[[float], Steps]:
+        c0, c1 = first[axis], last[axis]
+        return lambda target: _between(first, last, (target - c0) / (c1 - c0))
+
+    stretches = [(begin, finish, along(begin, finish))]
+    a, b = begin[axis], finish[axis]
     if a * b < 0:  # across the centre line: |coordinate| turns there
         crossing = _between(begin, finish, a / (a - b))
-        stretches = [(begin, crossing), (crossing, finish)]
+        stretches = [
+            (begin, crossing, along(begin, crossing)),
+            (crossing, finish, along(crossing, finish)),
+        ]
+    return _planned(stretches, axis, surface_feet, ladder, inches_per_step, begin)
+
+
+def _planned(
+    stretches: list[tuple[Steps, Steps, Callable[[float], Steps]]],
+    radius_axis: int,
+    surface_feet: float,
+    ladder: SpeedLadder,
+    inches_per_step: float,
+    begin: Steps,
+) -> SurfacePath:
+    """SFMO's pieces over the stretches of a path (a line, or an arc's quadrant segment),
+    each split where |coordinate| of the radius axis changes sense: every shift radius
+    becomes the point ``locate`` finds for its coordinate on the stretch, rounded to the
+    step grid."""
     cuts: list[Cut] = []
     ends: list[EndCondition | None] = []
     reached = begin
-    for first, last in stretches:
+    for first, last, locate in stretches:
         if first == last:
             continue
         c0, c1 = first[radius_axis], last[radius_axis]
@@ -247,11 +273,8 @@ def surface_cuts(
             continue
         side = 1 if c0 + c1 > 0 else -1
         for piece in stretch.pieces:
-            if piece.until is None:
-                point = last
-            else:
-                target = side * piece.until / inches_per_step
-                point = _between(first, last, (target - c0) / (c1 - c0))
+            until = piece.until
+            point = last if until is None else locate(side * until / inches_per_step)
             if point == reached:
                 continue  # the shift rounds onto the previous point: no move, no piece
             cuts.append(Cut(point, piece.speed))
@@ -312,37 +335,19 @@ def arc_cuts(
             return centre[u] + radius * cos(angle)
         return centre[v] + radius * sin(angle)
 
-    stretches = [(0.0, 1.0, begin, finish)]
+    def between(low: float, high: float) -> Callable[[float], Steps]:
+        return lambda target: at(_fraction_where(coordinate, target, low, high))
+
+    stretches = [(begin, finish, between(0.0, 1.0))]
     a, b = begin[radius_axis], finish[radius_axis]
     if a * b < 0:  # across the centre line: |coordinate| turns there
         middle = _fraction_where(coordinate, 0.0, 0.0, 1.0)
         crossing = at(middle)
-        stretches = [(0.0, middle, begin, crossing), (middle, 1.0, crossing, finish)]
-    cuts: list[Cut] = []
-    ends: list[EndCondition | None] = []
-    reached = begin
-    for low, high, first, last in stretches:
-        if first == last:
-            continue
-        c0, c1 = first[radius_axis], last[radius_axis]
-        stretch = plan(surface_feet, abs(c0) * inches_per_step, abs(c1) * inches_per_step, ladder)
-        ends.append(stretch.end)
-        if not stretch.pieces:
-            cuts.append(Cut(last, None))
-            reached = last
-            continue
-        side = 1 if c0 + c1 > 0 else -1
-        for piece in stretch.pieces:
-            if piece.until is None:
-                point = last
-            else:
-                target = side * piece.until / inches_per_step
-                point = at(_fraction_where(coordinate, target, low, high))
-            if point == reached:
-                continue  # the shift rounds onto the previous point: no move, no piece
-            cuts.append(Cut(point, piece.speed))
-            reached = point
-    return SurfacePath(tuple(cuts), tuple(ends))
+        stretches = [
+            (begin, crossing, between(0.0, middle)),
+            (crossing, finish, between(middle, 1.0)),
+        ]
+    return _planned(stretches, radius_axis, surface_feet, ladder, inches_per_step, begin)
 
 
 def _fraction_where(

@@ -154,9 +154,7 @@ class OutputElement(ModernProgram, OtherBlocks, Dwells, GeoutConversion):
         self.rotary_step = machine.number_option(119) or 0.0001
         self.inverse_time_code = machine.g_code(INVERSE_TIME) is not None
         f_format = machine.registers.formats[11]
-        self.inverse_time_limit = (
-            10.0**f_format.left - 10.0**-f_format.right if f_format is not None else 1e9
-        )
+        self.inverse_time_limit = f_format.largest if f_format is not None else 1e9
         chain = machine.kinematics
         tcp = chain is not None and machine.number_option(265) == 1
         self.tcp_on = chain.tcp_on if tcp and chain is not None else ""

@@ -5,6 +5,7 @@ block. Mixed into OutputElement (core/output/element.py)."""
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from math import pi, radians
 
 from gecent.core.absent import ABSENT, Absent
@@ -41,12 +42,8 @@ class OtherBlocks:
     modern: ModernControl
     words: WordFormatter
     repeats_suppressed: bool
-
-    def _check_feed(self) -> None:
-        raise NotImplementedError
-
-    def _direct_feed(self, block: Block) -> float:
-        raise NotImplementedError
+    _check_feed: Callable[[], None]
+    _direct_feed: Callable[[Block], float]
 
     def _cycle(self, block: Block) -> None:
         """A control's canned-cycle block (core/motion/control_cycles.py): its F is the

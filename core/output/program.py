@@ -33,12 +33,8 @@ class ModernProgram:
     tcp_off: str
     tcp_active: bool
     emit: Callable[[Block], None]
-
-    def _output(self, block: Block) -> None:
-        raise NotImplementedError
-
-    def flush_m(self, record: int | None = None) -> None:
-        raise NotImplementedError
+    _output: Callable[[Block], None]
+    flush_m: Callable[[int | None], None]
 
     def tool_length_block(self, record: int | None) -> None:
         """G43 H in a block of its own (option 263 = 1), when the tool's first move cannot

@@ -223,9 +223,7 @@ class FiveAxisKinematics:
         self.head_radius = machine.number_option(128)
         self.step = machine.number_option(14)
         f_format = machine.registers.formats[11]
-        self.inverse_limit = (
-            10.0**f_format.left - 10.0**-f_format.right if f_format is not None else 1e9
-        )
+        self.inverse_limit = f_format.largest if f_format is not None else 1e9
 
     def angles(self, move: TapeMove) -> tuple[float, float]:
         first, second = (move.rotary[axis.column - 3] for axis in self.chain.axes)
