@@ -19,6 +19,7 @@ from typing import Any
 import click
 from gecent.core import __version__
 from gecent.core.cl.records import Record
+from gecent.core.cli_batch import batch_command
 from gecent.core.cli_support import (
     DIALECT_HELP,
     installed_plugins,
@@ -315,7 +316,7 @@ def _progress(input_path: str) -> Callable[[Iterator[Record]], Iterator[Record]]
     return watch
 
 
-for _command in (cl_command, verify_command, plot_command):
+for _command in (cl_command, verify_command, plot_command, batch_command):
     main.add_command(_command)
 
 

@@ -1,0 +1,1 @@
+"""Posting many CL files at once (``gecent batch``, docs/batch.md)."""

@@ -1,0 +1,220 @@
+"""Running a batch: the jobs whose inputs changed go to a pool of local processes or to a Dask
+cluster; each outcome's outputs are written here, each in place at once (a temporary file
+renamed), only when its job succeeded. One failed, hung or crashed job never stops the
+others."""
+
+from __future__ import annotations
+
+import hashlib
+import os
+from collections.abc import Callable, Iterable, Iterator
+from concurrent.futures import FIRST_COMPLETED, Future, ProcessPoolExecutor, wait
+from concurrent.futures.process import BrokenProcessPool
+from dataclasses import dataclass
+from functools import partial
+from importlib import import_module
+from multiprocessing import get_all_start_methods, get_context
+from multiprocessing.context import BaseContext
+from pathlib import Path
+from typing import Any
+
+from gecent.core.batch.jobs import Job
+from gecent.core.batch.state import State, job_key, output_paths, plugins_fingerprint
+from gecent.core.batch.worker import Outcome, installed, run_job
+from gecent.core.errors import EXIT_INTERNAL, InputError
+
+CRASHED = (
+    "the worker process died while posting this job (killed, out of memory or a crash in "
+    "an extension); the other jobs went on"
+)
+
+
+@dataclass
+class Settings:
+    workers: int = 1
+    scheduler: str | None = None
+    force: bool = False
+    timeout: float | None = None
+    state: Path | None = None
+
+
+def run_batch(
+    jobs: list[Job], settings: Settings, progress: Callable[[Outcome], None] | None = None
+) -> list[Outcome]:
+    """Post ``jobs``; the outcomes in the jobs' order."""
+    plugins = installed()
+    fingerprint = plugins_fingerprint(plugins)
+    state = State.load(settings.state) if settings.state is not None else None
+    keys = {job.number: job_key(job, fingerprint) for job in jobs}
+    by_number = {job.number: job for job in jobs}
+    outcomes: dict[int, Outcome] = {}
+    todo: list[Job] = []
+    for job in jobs:
+        kept = None
+        if state is not None and not settings.force:
+            kept = state.unchanged(job, keys[job.number], plugins)
+        if kept is not None:
+            outcomes[job.number] = kept
+            if progress is not None:
+                progress(kept)
+        else:
+            todo.append(job)
+    if settings.scheduler is not None:
+        stream = _on_dask(todo, settings.scheduler, settings.timeout)
+    else:
+        stream = _on_local_processes(todo, settings.workers, settings.timeout)
+    try:
+        for outcome in stream:
+            job = by_number[outcome.number]
+            if outcome.ok:
+                written = _write_outputs(job, outcome)
+                if state is not None and outcome.ok:
+                    state.record(job, keys[job.number], outcome, written)
+            elif state is not None:
+                state.forget(job)
+            outcome.outputs = {}
+            outcomes[job.number] = outcome
+            if progress is not None:
+                progress(outcome)
+    finally:
+        if state is not None:
+            state.save()  # what finished is remembered even when the batch is stopped
+    return [outcomes[job.number] for job in jobs if job.number in outcomes]
+
+
+def _write_outputs(job: Job, outcome: Outcome) -> dict[str, str]:
+    """Each output put in place at once; the hashes of what was written. A file that
+    cannot be written fails the job (its other outputs are removed again)."""
+    paths = output_paths(job, outcome)
+    written: dict[str, str] = {}
+    try:
+        for kind, path in paths.items():
+            data = outcome.outputs[kind]
+            target = Path(path)
+            target.parent.mkdir(parents=True, exist_ok=True)
+            temporary = target.with_name(f".{target.name}.{os.getpid()}.tmp")
+            temporary.write_bytes(data)
+            os.replace(temporary, target)
+            written[path] = hashlib.sha256(data).hexdigest()
+    except OSError as exc:
+        for path in written:
+            Path(path).unlink(missing_ok=True)
+        outcome.status, outcome.exit_status = "failed", 2
+        outcome.error = f"cannot write {exc.filename}: {exc.strerror}"
+        return {}
+    return written
+
+
+def _on_local_processes(jobs: list[Job], workers: int, timeout: float | None) -> Iterator[Outcome]:
+    """The jobs on ``workers`` local processes. A worker that dies breaks the pool: the
+    jobs not yet done then run one at a time, each in a process of its own, so the one that
+    kills its process is named and the others are posted."""
+    if not jobs:
+        return
+    context = get_context("fork" if "fork" in get_all_start_methods() else "spawn")
+    task = partial(run_job, timeout=timeout)
+    unfinished: list[Job] = []
+    pool = ProcessPoolExecutor(max_workers=max(1, workers), mp_context=context)
+    try:
+        futures: dict[Future[Outcome], Job] = {pool.submit(task, job): job for job in jobs}
+        pending = set(futures)
+        while pending:
+            done, pending = wait(pending, return_when=FIRST_COMPLETED)
+            for future in done:
+                try:
+                    yield future.result()
+                except BrokenProcessPool:
+                    unfinished.append(futures[future])
+    except BaseException:
+        # stopped (Ctrl-C, SIGTERM, the caller gone): the queued jobs are dropped at once,
+        # not run to the end
+        pool.shutdown(wait=False, cancel_futures=True)
+        raise
+    pool.shutdown()
+    for job in sorted(unfinished, key=lambda job: job.number):
+        yield _isolated(job, timeout, context)
+
+
+def _isolated(job: Job, timeout: float | None, context: BaseContext) -> Outcome:
+    with ProcessPoolExecutor(max_workers=1, mp_context=context) as pool:
+        try:
+            outcome: Outcome = pool.submit(run_job, job, timeout).result()
+            return outcome
+        except BrokenProcessPool:
+            return Outcome(job.number, "crashed", EXIT_INTERNAL, CRASHED)
+
+
+def _on_dask(jobs: list[Job], scheduler: str, timeout: float | None) -> Iterator[Outcome]:
+    """The jobs on a Dask cluster: each ships its CL file's bytes and gets its outputs back,
+    so the workers need gecent and the machine packs installed, not this file system. A
+    bounded number of jobs is in flight, so the CL files are not all held at once."""
+    try:
+        distributed: Any = import_module("distributed")
+    except ImportError:
+        raise InputError(
+            "--scheduler needs the Dask distributed package: pip install 'gecent[dask]'"
+        ) from None
+    if not jobs:
+        return
+    try:
+        client = distributed.Client(scheduler, timeout="30s")
+    except (OSError, TimeoutError) as exc:
+        raise InputError(f"cannot reach the Dask scheduler at {scheduler}: {exc}") from None
+    with client:
+        _check_workers(client)
+        window = max(4, 4 * max(1, len(client.scheduler_info().get("workers", {}))))
+        queue = iter(jobs)
+        in_flight: dict[Any, Job] = {}
+        completed = distributed.as_completed()
+
+        def submit(count: int) -> None:
+            for job in _take(queue, count):
+                future = client.submit(run_job, job.shipped(), timeout, pure=False)
+                in_flight[future.key] = job
+                completed.add(future)
+
+        submit(window)
+        for future in completed:
+            job = in_flight.pop(future.key)
+            try:
+                yield future.result()
+            except Exception as exc:  # KilledWorker: the job took its workers down
+                yield Outcome(job.number, "crashed", EXIT_INTERNAL, f"{CRASHED} ({exc})")
+            future.release()
+            submit(1)
+
+
+def _check_workers(client: Any) -> None:
+    """Every worker runs this version of gecent, so its output is this one's."""
+    from gecent.core import __version__
+
+    versions: dict[str, str] = client.run(_gecent_version)
+    if not versions:
+        raise InputError("the Dask cluster has no workers")
+    wrong = {worker: version for worker, version in versions.items() if version != __version__}
+    if wrong:
+        worker, version = next(iter(wrong.items()))
+        raise InputError(
+            f"Dask worker {worker} runs gecent {version}, this is {__version__}: install the "
+            "same gecent and machine packs on every worker"
+        )
+
+
+def _gecent_version() -> str:
+    try:
+        from gecent.core import __version__
+    except ImportError:
+        return "(not installed)"
+    return __version__
+
+
+def _take(items: Iterator[Job], count: int) -> Iterable[Job]:
+    for _ in range(count):
+        item = next(items, None)
+        if item is None:
+            return
+        yield item
+
+
+def default_workers() -> int:
+    return len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else os.cpu_count() or 1
