@@ -9,6 +9,11 @@ not given again since: the tool, the spindle (S and its direction M), the feed o
 gear, the coolant. A condition given again after the stop was output when given; the
 manual's negative-value mark for it is the ``respecified`` set here (decision: §4.7's
 reading, "negative = already output, skip").
+
+Option 136 = 1 (001 L25995-26007): the control itself turns spindle and coolant back to
+their former conditions when the program restarts after the stop, so RESTAT leaves them out
+(the tool and the feed or rapid gear still come back); a new SPINDL or COOLNT after the
+stop is output when given, which is the manual's "takes precedence".
 """
 
 from __future__ import annotations
@@ -29,10 +34,12 @@ from gecent.core.state import (
 def restat(run: Post, record: int) -> None:
     """RESTAT, at the first motion after a stop: one block for the tool, one for the spindle
     (S with its direction M), then the feed/rapid gear and coolant codes, which wait for
-    the motion block. Option 145 = -2 reinstates the rapid gear only (ENTRAP did it)."""
+    the motion block. Option 145 = -2 reinstates the rapid gear only (ENTRAP did it);
+    option 136 = 1 leaves spindle and coolant to the control."""
 
     state = run.state
     option = run.machine.number_option(145)
+    by_post = run.machine.number_option(136) != 1  # spindle and coolant: the post's to restore
     conditions = state.conditions
     if option in (1.0, -1.0):
         output = run.output
@@ -41,7 +48,7 @@ def restat(run: Post, record: int) -> None:
             block = Block(Code.NONMOTION, record)
             block.cells[13] = tool
             output.output(block)
-        direction = conditions.due(SPINDLE_M)
+        direction = conditions.due(SPINDLE_M) if by_post else None
         if direction is not None:
             command = conditions.due(SPINDLE_COMMAND)
             if command is not None:
@@ -55,7 +62,7 @@ def restat(run: Post, record: int) -> None:
             if gear is not None and option == 1.0:
                 output.store_m(gear)
         for slot in (COOLANT, COOLANT2):
-            coolant = conditions.due(slot)
+            coolant = conditions.due(slot) if by_post else None
             if coolant is not None:
                 output.store_m(coolant)
                 state.modes.coolant_on = True

@@ -370,9 +370,16 @@ class Run(CycleHoles, Elements):
             self._general(Fini(self._file, None, last.number + 1 if last is not None else 1))
         self.result.cut_minutes = self.output.cut_minutes
         self.result.dwell_minutes = self.output.dwell_minutes
+        reels = self.sinks.reels
+        for note in reels.notes if reels is not None else ():
+            self.warn(note)  # a reel broken at option 134's maximum (core/output/reels.py)
         if self.output.slide_limits.exceeded and self.machine.number_option(110) == 2:
             self.result.punch_suppressed = True
             self.warn(Diagnostic("SLIDE LIMITS EXCEEDED: NO PUNCHED OUTPUT (OPTION 110 = 2)"))
+        if self.machine.number_option(173) == 0 and not self.result.punch_suppressed:
+            # printed output only: the listing, no tape image, no punch (001 L26380-26388)
+            self.result.punch_suppressed = True
+            self.warn(Diagnostic(PRINTED_ONLY))
         return self.result
 
     def _check_values(self, record: Record) -> None:
@@ -412,7 +419,7 @@ class Run(CycleHoles, Elements):
             safety_motion(self, record)  # TSTFLG's SAFETO/SAFETX
         if positioning:
             if self.state.threading.armed:
-                raise NotYetSupported("THREAD on a positioning machine", record.where)
+                raise InputError(THREAD_POSITIONING, record.where)
             self.positioning.record(record, self.cycle)
             return
         if self.cycle is not None and record.subtype is not MotionSubtype.FROM:
@@ -450,13 +457,13 @@ class Run(CycleHoles, Elements):
         self.circle.finisher = MultiaxisCircle(self.multiaxis, self.circle).finish
 
     def _multiaxis_special(self, record: Motion, positioning: bool) -> None:
-        """What a multiaxis machine's motion does not do yet stops the run naming it."""
+        """What a multiaxis machine's motion cannot do is bad input naming why."""
         if positioning:
-            raise NotYetSupported("multiaxis motion on a positioning machine", record.where)
+            raise InputError(MULTIAXIS_POSITIONING, record.where)
         if self.state.threading.armed:
-            raise NotYetSupported("THREAD on a multiaxis machine", record.where)
+            raise InputError(THREAD_MULTIAXIS, record.where)
         if self.state.sfm.active:
-            raise NotYetSupported("SFM on a multiaxis machine", record.where)
+            raise InputError(SFM_MULTIAXIS, record.where)
 
 
 def _units(run: Post, statement: Statement) -> None:
@@ -472,5 +479,30 @@ def _names_gecent(statement: Statement) -> bool:
 CURVE_WORDS = frozenset({"NURBS", "KNOT", "CNTRL", "SPLINE", "BSPLINE"})
 AFTER_END = "END OR RESET HAS NOT BEEN FOLLOWED BY A FROM POINT."  # comment 47 (L34080)
 UNKNOWN_WORD = "IS NOT A GECENT III POSTPROCESSOR WORD; STATEMENT DISREGARDED"
+# combinations the manual's overlays do not make (docs/decisions.md, h4): the threading
+# routines are the lathe's THREAD/THREDO (GELATH) and the mill's THREDM (GEMILL), SFMO the
+# lathe's (001 L38323-38380, L37415-37420); GEMAXS drives a contouring control (L443-444;
+# the multiaxis sample has option 1 = 0, L550-566)
+THREAD_POSITIONING = (
+    "THREAD on a positioning machine: threading is the lathe's THREAD/THREDO (GELATH) and "
+    "the mill's THREDM (GEMILL); the positioning overlay GEPOS has no thread (001 "
+    "L38323-38380)"
+)
+THREAD_MULTIAXIS = (
+    "THREAD on a multiaxis machine: threading is the lathe's THREAD/THREDO (GELATH) and the "
+    "mill's THREDM (GEMILL), whose lead is along the machine's slides; the multiaxis "
+    "overlay GEMAXS (option 116) has no thread (001 L38323-38380, L443-444)"
+)
+SFM_MULTIAXIS = (
+    "SFM on a multiaxis machine: SFMO (GELATH) keeps the surface speed by the radius of a "
+    "CL coordinate about the spindle's centre line; under GEMAXS (option 116) the transform "
+    "turns the part, so that radius is not the cut's (001 L37415-37420, L443-444)"
+)
+MULTIAXIS_POSITIONING = (
+    "multiaxis motion on a positioning machine: GEMAXS's transforms (option 116) make a "
+    "contouring control's moves (the manual's multiaxis machine has option 1 = 0, 001 "
+    "L443-444, L550-566); a positioning machine turns its table with ROTATE/TABLE (ROTABA)"
+)
+PRINTED_ONLY = "PRINTED OUTPUT ONLY: NO TAPE IS PUNCHED (OPTION 173 = 0)"
 
 _TYPE_NAMES = {"MOTION": "5000", "CIRCLE": "3000", "ARELEM": "6000", "MULTIAX": "9000"}

@@ -296,6 +296,54 @@ class ToolElement:
         self.state.position.translation = (x, y, z + term - self.length_term)
         self.length_term = term
 
+    def spindle_turret(
+        self,
+        statement: Statement,
+        station: int,
+        directions: list[str],
+        offset: int | None,
+        length: float | None,
+    ) -> None:
+        """ROTUR's turn of a positioning machine's spindle turret (core/motion/
+        rotary_devices.py turn_spindle_turret): station n comes down as TOOLGP loads a tool,
+        in one block with TABLEG(1) and T; ``offset`` and ``length`` (machine units) only with
+        option 86 = -2: the length is TOOLEN, which POSMOV adds to Z (option 86 < 0)."""
+        if length is not None:  # TOOLEN: POSMOV adds it to Z under option 86 < 0 (L34959)
+            self.state.tool.length = length
+            if self.first_length is None:
+                self.first_length = length
+            self.previous_length = length
+        machine = self.state.machine
+        self.state.tool.number = station
+        self.selected = None
+        # one block turns the turret: the direction's code (as programmed, else MINMOV's
+        # shorter way) or, with neither, the turret-index code
+        direction = next((_DIRECTIONS[w] for w in directions), None)
+        if direction is None:
+            direction = self._shorter_way(station)
+        index = machine.m_code(TURRET_INDEX)
+        if direction is not None:
+            self._store(direction, statement.where)
+        elif index is not None:
+            self.output.store_m(index)
+        offset_m = self._offset_m(offset)
+        if offset_m is not None:
+            self.output.store_m(offset_m)
+        self.position = station
+        has_t = machine.registers.formats[13] is not None
+        if has_t:
+            self.state.remember(T_CODE, station)
+        if has_t and machine.number_option(1) == 2:
+            self.state.pending.tool = float(station)  # TOOLGP's T waits for the motion
+            return
+        block = Block(Code.AUX_ONLY, statement.number)
+        cycle_off = machine.g_code(1)
+        if cycle_off is not None:
+            block.cells[2] = float(cycle_off)
+        if has_t:
+            block.cells[13] = station
+        self.output.output(block)
+
     def _load(
         self,
         statement: Statement,

@@ -319,7 +319,9 @@ def test_verify_in_the_batch(tmp_path: Path) -> None:
 
 
 @pytest.mark.skipif(not CORPUS.is_dir(), reason="shared corpus not present")
-def test_the_corpus_on_a_dask_cluster_matches_the_local_run(tmp_path: Path) -> None:
+def test_the_corpus_on_a_dask_cluster_matches_the_local_run(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
     distributed = pytest.importorskip("distributed")
     local, remote = tmp_path / "local", tmp_path / "dask"
     common = [str(CORPUS), "--machine", "linuxcnc-mill", "--machine", "mach23"]
@@ -337,6 +339,14 @@ def test_the_corpus_on_a_dask_cluster_matches_the_local_run(tmp_path: Path) -> N
             "--json",
             str(tmp_path / "d.json"),
         )
+        monkeypatch.setattr(  # as if this host had another pack version than the workers
+            "gecent.core.batch.runner.plugins_fingerprint", lambda plugins: "another"
+        )
+        refused = batch(
+            str(HELLO), "--out", str(tmp_path / "x"), "--scheduler", cluster.scheduler_address
+        )
+        monkeypatch.undo()
+    assert refused.exit_code == 2 and "other plugins or plugin versions" in refused.output
     assert result.exit_code == 1, result.output
     assert "on Dask at tcp://" in result.output
     written = sorted(p.relative_to(local) for p in local.rglob("*") if p.is_file())

@@ -119,13 +119,12 @@ def test_unsupported_statement_stops_without_output(
     source = tmp_path / "u.apt"
     # (SAFETY on MACH23 was the example until it became bad input, issue 22 wave 4;
     # SPINDL/DWELL until it became bad input too, wave 5: the manual gives it no code;
-    # ROTATE/TURRET on MACH23 until it became bad input on a contouring machine, wave 6)
-    source.write_text("PARTNO X\nMACHIN/GECENT,24,PLAN\nFINI\n")
+    # ROTATE/TURRET on MACH23 until it became bad input on a contouring machine, wave 6;
+    # MACHIN/GECENT,24,PLAN until GEPLAD was built, core/plan.py)
+    source.write_text("PARTNO X\nMACHIN/GECENT,23\nNURBS/1,2\nFINI\n")
     code, _, err = run("post", str(source))
     assert code == 3
-    assert err.strip().startswith(
-        f"{source}:2 (record 2): error: not yet supported: MACHIN/...,PLAN"
-    )
+    assert err.strip().startswith(f"{source}:3 (record 3): error: not yet supported: NURBS")
     assert not (tmp_path / "u.tape").exists() and not (tmp_path / "u.lis").exists()
     assert [p.name for p in tmp_path.iterdir()] == ["u.apt"]  # no temporary left either
 

@@ -61,8 +61,11 @@ def test_mach23_posts_the_corpus_file(name: str, tmp_path: Path) -> None:
     result = runner.invoke(main, [*arguments, str(listing), "--punch", "ascii", str(ascii_)])
     assert result.exit_code == 0, result.stderr
     image = tape.read_text().splitlines()
-    assert unpunch(eia.read_bytes(), "eia") == image
-    assert unpunch(ascii_.read_bytes(), "ascii") == image
+    # (MACH23 punches the readable PARTNO at the head of each reel: readable=True skips it)
+    assert unpunch(eia.read_bytes(), "eia", readable=True) == image
+    # a tape break's end-of-record mark (=) is ASCII's rewind stop, which reads back as "%"
+    ascii_image = ["%" + line[1:] if line.startswith("=") else line for line in image]
+    assert unpunch(ascii_.read_bytes(), "ascii", readable=True) == ascii_image
     text = listing.read_text()
     assert text.startswith("***GENERAL ELECTRIC GECENT III POSTPROCESSOR***\nSAMPLE MILL")
     motion_lines = [line for line in image if line.startswith("N") and "X" in line]

@@ -15,7 +15,7 @@ import pytest
 from click.testing import CliRunner
 from gecent.core.cli import main
 from gecent.core.dispatch.post import post
-from gecent.core.errors import NotYetSupported
+from gecent.core.errors import InputError
 from gecent.core.plugins import PluginSet
 from gecent.core.verify.check import verify
 
@@ -116,12 +116,15 @@ def test_the_second_hole_bottom_by_hand_on_the_slides(tmp_path: Path) -> None:
     assert bottom.split()[1:] == ["G01", "X167.", "Z46."]
 
 
-def test_out_on_a_new_tool_axis_stays_unbuilt(plugins: PluginSet, tmp_path: Path) -> None:
-    """OUT stays at the bottom: the tool would turn inside the hole."""
+def test_out_on_a_new_tool_axis_from_inside_a_hole_is_bad_input(
+    plugins: PluginSet, tmp_path: Path
+) -> None:
+    """OUT stays at the bottom: the tool would turn inside the hole (bad input since h4,
+    which built OUT and IN on a new axis: tests/test_last_forms_wave7.py)."""
     job = tmp_path / "out.apt"
     job.write_text(
         "MACHIN/GECENT,87,OPTAB,265,1\n"
         + PATTERN.replace("CYCLE/DRILL,DEPTH,5,CLEAR,2,MMPM,100", "CYCLE/OUT,DEPTH,5,CLEAR,2")
     )
-    with pytest.raises(NotYetSupported, match="turn at the bottom of a hole"):
+    with pytest.raises(InputError, match="left the tool at the bottom of the hole before"):
         post(str(job), plugins)

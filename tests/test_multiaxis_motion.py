@@ -11,7 +11,7 @@ import numpy as np
 import pytest
 from gecent.core.cl.records import Motion, MotionSubtype
 from gecent.core.dispatch.post import post
-from gecent.core.errors import InputError, NotYetSupported
+from gecent.core.errors import InputError
 from gecent.core.machine import standard_machine
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.machine.loader import load_machine_text
@@ -171,13 +171,15 @@ def test_a_tool_axis_not_of_length_one_is_warned(plugins: PluginSet, tmp_path: P
         ("CYCLE/OUT,DEPTH,1,CLEAR,0.1\nGOTO/2,1,9,0,0,1", "turn at the bottom of a hole"),
     ],
 )
-def test_what_multiaxis_motion_does_not_do_yet_is_named(
+def test_what_multiaxis_motion_did_not_do_is_built(
     plugins: PluginSet, tmp_path: Path, line: str, feature: str
 ) -> None:
+    """(Not yet supported until h4: OUT from outside a hole goes to the new hole's R point
+    along its axis, tests/test_last_forms_wave7.py.)"""
     program = tmp_path / "m.apt"
     program.write_text(PROGRAM.replace("GOTO/2,1,9", f"{line}\nGOTO/2,1,9"))
-    with pytest.raises(NotYetSupported, match=feature):
-        post(str(program), plugins, machine_override=mach40_g10())
+    result = post(str(program), plugins, machine_override=mach40_g10())
+    assert not any(feature in d.text for d in result.diagnostics)
 
 
 def test_linrty_leaves_every_piece_within_the_sphere() -> None:

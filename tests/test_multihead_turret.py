@@ -110,11 +110,11 @@ def test_a_correction_outside_a_section_is_code_minus_3(plugins: PluginSet, tmp_
     assert tape_line(correction) == "N013G01X+002Z-0005F0049"
 
 
-def test_a_correction_in_a_split_section_is_not_yet_supported(
+def test_a_correction_on_a_common_axis_is_not_yet_supported(
     plugins: PluginSet, tmp_path: Path
 ) -> None:
-    """One feedrate register (option 139 = 0) splits moves to equal times; a correction's
-    pieces would need points of their own: not built."""
+    """Heads on a common axis (option 155): a correction along it would move the other
+    head's tool: not built (the split one, option 139 = 0, is: test_multihead_turret_split)."""
     body = "SELECT/HEAD,1\nOP/3\nTURRET/2,2,2.5,1,NOW\nSELECT/HEAD,2\nOP/3\nGOTO/6,3,0\n"
-    with pytest.raises(NotYetSupported, match=r"CODE \+-14"):
-        _post(plugins, tmp_path, body, ",OPTAB,139,0")
+    with pytest.raises(NotYetSupported, match=r"CODE \+-14.*common axis"):
+        _post(plugins, tmp_path, body, ",OPTAB,155,1")

@@ -12,7 +12,7 @@ from click.testing import CliRunner
 from gecent.core.cl.records import Statement, Word
 from gecent.core.cli import main
 from gecent.core.dispatch.post import post
-from gecent.core.errors import FatalError, InputError, NotYetSupported
+from gecent.core.errors import FatalError, InputError
 from gecent.core.machine.selection import apply_machin_options, parse_machin, ptonly_deck
 from gecent.core.output.punch import (
     GLYPHS,
@@ -55,12 +55,14 @@ def test_plan_on_a_contouring_machine_is_ignored_and_said_so(tmp_path: Path) -> 
     assert result.diagnostics[0].where is not None and result.diagnostics[0].where.line == 2
 
 
-def test_plan_on_a_positioning_machine_names_geplad_and_why() -> None:
+def test_plan_on_a_positioning_machine_is_planned_before_the_run() -> None:
+    """(Not yet supported until h4 built GEPLAD, core/plan.py, tests/test_geplad.py: the
+    run meets a PLAN the pre-pass did not take, and says it is ignored there.)"""
     request = parse_machin(machin("GECENT", 24, "PLAN"))
     assert request is not None
-    with pytest.raises(NotYetSupported, match=r"GEPLAD.*Section 4\.10") as caught:
-        apply_machin_options(machine("mach24"), request)
-    assert caught.value.where is not None and caught.value.where.line == 2
+    _, notes = apply_machin_options(machine("mach24"), request)
+    assert notes[0].text.startswith("MACHIN/GECENT,...,PLAN IGNORED HERE: GEPLAD PLANS")
+    assert notes[0].where is not None and notes[0].where.line == 2
 
 
 # -- PTONLY/2 --------------------------------------------------------------------------------

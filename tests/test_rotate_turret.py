@@ -4,8 +4,7 @@ ROTATE (RTATGB) sends ROTATE/TURRET to ROTDRF on a drafting machine and to ROTUR
 otherwise (001 L36055-36095). ROTUR turns a positioning machine's spindle turret (overlay
 GEPOS, L36345-36382): on a contouring machine the statement is bad input naming why (its
 turret is the lathe's TURRET statement, option 96, L25532). On the machines that have the
-routines, the manual defines no block for either (no register, no code, and for ROTUR no
-words), so they stay not yet supported, each naming its routine.
+routines they are built (h4): tests/test_last_forms_wave7.py.
 """
 
 from __future__ import annotations
@@ -13,7 +12,7 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
-from gecent.core.errors import InputError, NotYetSupported
+from gecent.core.errors import InputError
 
 from tests.test_multiaxis_rotref import FROM, mach40, moves
 from tests.test_multiaxis_rotref import run as post_multiaxis
@@ -41,14 +40,16 @@ def test_rotate_turret_on_a_multiaxis_machine_is_bad_input(tmp_path: Path) -> No
 
 
 @pytest.mark.parametrize("build", [lambda: positioning(0.0), positioning_table])
-def test_rotate_turret_on_a_positioning_machine_names_rotur(build) -> None:  # type: ignore[no-untyped-def]
-    with pytest.raises(NotYetSupported, match=r"ROTATE/TURRET on a positioning machine \(ROTUR\)"):
-        post(["FROM/0,0,0", "ROTATE/TURRET,1"], build())
+def test_rotate_turret_on_a_positioning_machine_is_rotur(build) -> None:  # type: ignore[no-untyped-def]
+    """(Not yet supported until h4 built ROTUR: tests/test_last_forms_wave7.py.)"""
+    result = post(["FROM/0,0,0", "ROTATE/TURRET,1"], build())
+    assert any(b.cells[13] == 1 for b in result.blocks)
 
 
-def test_rotate_turret_on_a_drafting_machine_names_rotdrf() -> None:
-    with pytest.raises(NotYetSupported, match=r"drafting machine \(ROTDRF\)"):
-        post(["FROM/0,0,0", "DRAFT/ON", "ROTATE/TURRET,1"], plotter())
+def test_rotate_turret_on_a_drafting_machine_is_rotdrf() -> None:
+    """(Not yet supported until h4 built ROTDRF: D3, tests/test_last_forms_wave7.py.)"""
+    result = post(["FROM/0,0,0", "DRAFT/ON", "ROTATE/TURRET,1"], plotter())
+    assert any(b.cells[16] == 3 for b in result.blocks)
 
 
 def test_a_table_still_turns_beside_the_turret_branch(tmp_path: Path) -> None:

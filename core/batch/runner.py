@@ -185,27 +185,34 @@ def _on_dask(jobs: list[Job], scheduler: str, timeout: float | None) -> Iterator
 
 
 def _check_workers(client: Any) -> None:
-    """Every worker runs this version of gecent, so its output is this one's."""
+    """Every worker runs this version of gecent with the same plugins (the machine packs and
+    their versions), so its outputs are the ones this host would post."""
     from gecent.core import __version__
 
-    versions: dict[str, str] = client.run(_gecent_version)
-    if not versions:
+    here = (__version__, plugins_fingerprint(installed()))
+    found: dict[str, tuple[str, str]] = client.run(_worker_identity)
+    if not found:
         raise InputError("the Dask cluster has no workers")
-    wrong = {worker: version for worker, version in versions.items() if version != __version__}
-    if wrong:
-        worker, version = next(iter(wrong.items()))
-        raise InputError(
-            f"Dask worker {worker} runs gecent {version}, this is {__version__}: install the "
-            "same gecent and machine packs on every worker"
-        )
+    for worker, (version, fingerprint) in found.items():
+        if version != here[0]:
+            raise InputError(
+                f"Dask worker {worker} runs gecent {version}, this is {here[0]}: install the "
+                "same gecent and machine packs on every worker"
+            )
+        if fingerprint != here[1]:
+            raise InputError(
+                f"Dask worker {worker} has other plugins or plugin versions than this host "
+                "(gecent --list-plugins shows them): install the same machine packs on every "
+                "worker"
+            )
 
 
-def _gecent_version() -> str:
+def _worker_identity() -> tuple[str, str]:
     try:
         from gecent.core import __version__
     except ImportError:
-        return "(not installed)"
-    return __version__
+        return ("(not installed)", "")
+    return (__version__, plugins_fingerprint(installed()))
 
 
 def _take(items: Iterator[Job], count: int) -> Iterable[Job]:

@@ -11,8 +11,9 @@ from gecent.core.machine.definition import MachineDefinition
 from gecent.core.machine.selection import apply_machin_options, first_machin, resolve_machine
 from gecent.core.macros.dialect import choose_dialect, read_in_dialect, read_raw
 from gecent.core.motion.guard import DEFAULT_MAX_SEGMENTS
-from gecent.core.multihead.first_pass import combined_program
+from gecent.core.multihead.first_pass import combined_program, multihead_flag
 from gecent.core.output.sinks import Sinks
+from gecent.core.plan import planned_records, plans
 from gecent.core.plugins import PluginSet
 from gecent.core.run import Run
 from gecent.core.state import RunResult
@@ -48,7 +49,9 @@ def post(
             layout = apply_machin_options(machine, request)[0]
         except GecentError:
             layout = machine  # (the run reports the bad pair at its MACHIN)
-    if len(machine.heads) > 1 and combined_program(read_raw(path, plugins, spoken)):
+    if multihead_flag(machine) or (
+        len(machine.heads) > 1 and combined_program(read_raw(path, plugins, spoken))
+    ):
         from gecent.core.multihead.post import post_multihead
 
         outputs = sinks(layout) if sinks is not None else None
@@ -74,6 +77,8 @@ def post(
     for note in [*notes, *run.sinks.notes]:  # the outputs' (GEOUT1 replaced) after MACHIN's
         run.warn(note)
     records = read_in_dialect(path, plugins, spoken, run.warn, run.units.machine_mm == 1.0)
+    if plans(machine, request):  # MACHIN/GECENT,n,PLAN with option 1 = +1: GEPLAD first
+        records = planned_records(records, layout, run.warn)
     return run.process(watch(records) if watch is not None else records)
 
 

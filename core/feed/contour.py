@@ -105,6 +105,33 @@ class FeedCommand:
             constant = ceil(command / highest - 1e-9)  # to the maximum "or below" (L12470-12480)
         return constant, float(half_up(command / constant, decimals)), regfor
 
+    def decimal_shift(
+        self, ipm: float, gdimul: float, length: float, dimension_class: int
+    ) -> tuple[int, float, float | None] | None:
+        """Option 224's scaling (the 100S in metric, 001 L26729-26738; docs/decisions.md):
+        the most places k that the block's command can be moved left and stay within its
+        maximum, as (k, command x 10^k, F format); None when it cannot move one place or the
+        form is magic three. The departures over 10^k go in I, J, K, so the control's
+        feed is unchanged while the command keeps k more significant digits."""
+        if self.form == 1:
+            return None
+        if self.form == 0:
+            command, highest, regfor, decimals = (
+                gdimul * ipm / length,
+                self.maximum,
+                None,
+                self.decimals,
+            )
+        else:
+            regfor, _, highest = self._row(dimension_class)
+            command, decimals = ipm / length, int(regfor) % 10
+        k = 0
+        while command * 10 ** (k + 1) <= highest * (1 + 1e-12) and k < 9:
+            k += 1
+        if k == 0:
+            return None
+        return k, float(half_up(command * 10**k, decimals)), regfor
+
     def _row(self, location: int) -> tuple[float, float, float]:
         start = _CLASS_ORDER.index(location)
         for candidate in _CLASS_ORDER[start:]:

@@ -17,7 +17,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 from math import pi, radians
 
-from gecent.core.absent import or_zero
+from gecent.core.absent import ABSENT, or_zero
 from gecent.core.machine.definition import ROTARY_CELLS, MachineDefinition
 from gecent.core.motion.rotary import UNITS_PER_DEGREE
 from gecent.core.output.block import Block
@@ -101,3 +101,67 @@ class FeedLimits:
             return limited, None
         self.noted = block.record
         return limited, f"FEEDRATE REDUCED TO {limited:.3f} BY THE AXIS FEED LIMITS"
+
+
+HEAD_FEED_REDUCED = "FEEDRATE REDUCED TO {:.3f} BY THE HEAD'S MAXIMUM OF {:g} RPM (OPTION 192)"
+# the multiaxis classes (option 116) whose DBFSEG(6) axis, the head's register by GECENT's
+# convention (001 L1793-1796, L5600-5606), turns a head: classes 2 and 4 turn a table there,
+# class 7 a work-holding fixture and class 5 nothing (plugins/classes)
+HEAD_CLASSES = frozenset({1, 3, 6, 8, 9})
+HEAD_CELL = ROTARY_CELLS[0]
+
+
+def head_degrees(machine: MachineDefinition, block: Block) -> float:
+    """How far a multiaxis block turns the rotary head (degrees; 0.0 when the machine's
+    class has no head, or the block does not turn it). A five-axis machine by data has its
+    own axis limits and no head option (docs/five-axis.md)."""
+    if machine.kinematics is not None or int(machine.number_option(116)) not in HEAD_CLASSES:
+        return 0.0
+    value = block.cells[HEAD_CELL]
+    if value is ABSENT:
+        return 0.0
+    return float(value) / UNITS_PER_DEGREE.get(machine.number_option(118), 1.0)
+
+
+class HeadFeedLimit:
+    """Option 192 on a multiaxis head machine, a block at a time: the feed lowered to the
+    head's maximum RPM, the diagnostic once for a move's segments."""
+
+    def __init__(self, machine: MachineDefinition) -> None:
+        self.machine = machine
+        self.noted: int | None = None
+
+    @staticmethod
+    def applies(machine: MachineDefinition) -> bool:
+        return (
+            machine.number_option(192) > 0
+            and machine.kinematics is None
+            and int(machine.number_option(116)) in HEAD_CLASSES
+        )
+
+    def block_feed(self, block: Block, ipm: float, path: float) -> tuple[float, str | None]:
+        degrees = head_degrees(self.machine, block)
+        limited, note = head_limited_feed(self.machine, ipm, degrees, path)
+        if note is None or block.record == self.noted:
+            return limited, None
+        self.noted = block.record
+        return limited, note
+
+
+def head_limited_feed(
+    machine: MachineDefinition, ipm: float, head_degrees: float, path: float
+) -> tuple[float, str | None]:
+    """Option 192 (001 L26511-26516): the rotary head turns at most this many RPM. A block
+    that turns the head ``head_degrees`` while its feed ``ipm`` covers ``path`` inches
+    takes path / ipm minutes, so the head turns at (degrees / 360) ipm / path RPM; above
+    the maximum the feed is lowered until the head turns at it, with a diagnostic. The
+    manual gives no action; lowering the feed is what FEDLIM does for an axis over its
+    maximum (001 L11988-12104). 0 (the standard) sets no limit."""
+    maximum = machine.number_option(192)
+    if maximum <= 0 or head_degrees == 0.0 or path <= 0.0 or ipm <= 0.0:
+        return ipm, None
+    rpm = abs(head_degrees) / 360.0 * ipm / path
+    if rpm <= maximum * (1 + 1e-12):
+        return ipm, None
+    allowed = maximum * 360.0 * path / abs(head_degrees)
+    return allowed, HEAD_FEED_REDUCED.format(allowed, maximum)

@@ -109,12 +109,16 @@ def _spindle_table(machine: MachineDefinition) -> Iterator[Problem]:
                 f"SRTAB({empty[0]}) is empty",
             )
         return
+    tables = int(_number(machine, 153))
+    product = "option 7 x option 8"
+    if tables in (2, 3) and spindle_type not in SRTAB_EXTENDED_TYPES:
+        count *= tables  # a table per head, one after the other (option 153, core/multihead)
+        product += " x option 153"
     if count >= len(machine.store):
         yield (
             "spindle_table",
             "speeds",
-            f"option 7 x option 8 = {count} speeds, more than the store holds "
-            f"({len(machine.store) - 1})",
+            f"{product} = {count} speeds, more than the store holds ({len(machine.store) - 1})",
         )
         return
     missing = [i for i in range(1, count + 1) if machine.store[i] is ABSENT]
@@ -122,14 +126,14 @@ def _spindle_table(machine: MachineDefinition) -> Iterator[Problem]:
         yield (
             "spindle_table",
             "speeds",
-            f"option 7 x option 8 = {count} speeds, but SRTAB holds only {count - len(missing)} "
+            f"{product} = {count} speeds, but SRTAB holds only {count - len(missing)} "
             "(checklist 11a: their product must equal the number of speeds)",
         )
     elif spindle_type not in SRTAB_EXTENDED_TYPES and machine.srtab_top > count:
         yield (
             "spindle_table",
             "speeds",
-            f"option 7 x option 8 = {count} speeds, but SRTAB holds {machine.srtab_top} values "
+            f"{product} = {count} speeds, but SRTAB holds {machine.srtab_top} values "
             f"(checklist 11a; spindle type {spindle_type} keeps only speeds in SRTAB)",
         )
     if not missing:

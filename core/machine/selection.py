@@ -14,7 +14,6 @@ from gecent.core.errors import (
     Diagnostic,
     FatalError,
     InputError,
-    NotYetSupported,
     SourcePosition,
 )
 from gecent.core.machine.catalogue import OPTION_COUNT, catalogue
@@ -276,10 +275,10 @@ def _plan(
 ) -> Diagnostic | None:
     """The PLAN modifier: GEMON calls GEPLAD "if the modifier PLAN is given in the MACHIN
     statement and option 1 is + 1" (001 L473-476, IGEFLG L17369-17375), option 1 as this
-    MACHIN leaves it. Otherwise PLAN asks for nothing and is said to be ignored. With option
-    1 = +1 the pass would "redevelop a new CL tape", but what it plans is not in the manual:
-    it points to "Section 4.10 on GEPLAD" and §4.10 is the dwell section (001 L16296), so the
-    run stops as not yet supported rather than post a tape that was not planned."""
+    MACHIN leaves it; otherwise PLAN asks for nothing and is said to be ignored. GEPLAD runs
+    once, before the run, for the first MACHIN/GECENT (core/plan.py), and its planned tape
+    carries that MACHIN without PLAN: a PLAN the run meets came later, or on a multihead
+    program (planned per head by no one), and is said to be ignored."""
     option_1 = changes.get(1, machine.option(1))
     where = request.where
     if option_1 != 1.0:
@@ -288,10 +287,9 @@ def _plan(
             "GEPLAD PLANS ONLY FOR POSITIONING MACHINES",
             where,
         )
-    raise NotYetSupported(
-        "MACHIN/...,PLAN on a positioning machine (option 1 = +1): the GEPLAD planning "
-        "pre-pass that redevelops the CL tape; the manual does not describe what it plans "
-        "(its 'Section 4.10 on GEPLAD' is the dwell section); post without PLAN",
+    return Diagnostic(
+        "MACHIN/GECENT,...,PLAN IGNORED HERE: GEPLAD PLANS THE CL TAPE ONCE, BEFORE THE "
+        "RUN, FROM THE FIRST MACHIN/GECENT OF A SINGLE-HEAD PROGRAM",
         where,
     )
 

@@ -3,7 +3,8 @@ SRFCHK, CHKAX, DETDIR, COMPR, QUADNT, QUADET, PROCQD, OFFARC).
 
 A type-3000 circle record (option 9 = 1) makes the next motion record a circle when it
 passes the tests: LINCIR mode (option 28 = 1), every point in the plane (option 5), the
-tool-path radius within option 4, no threading. APT writes several points on the arc and
+tool-path radius within the circular maximum departure (option 223, else option 4), no
+threading. APT writes several points on the arc and
 DETDIR finds the direction from the first two; CAM systems write one point, the arc's end,
 and the direction is then counterclockwise about the circle axis. The points then only serve
 the tests and the end point: the arc from the previous point to the last point of the record
@@ -30,6 +31,7 @@ from gecent.core.cl.records import Circle, Motion, MotionSubtype
 from gecent.core.errors import Diagnostic, FatalError, InputError, NotYetSupported
 from gecent.core.machine.shuffle import cell_map
 from gecent.core.motion.arc_pieces import Arc, ArcPieces
+from gecent.core.motion.gcode import circular_departure
 from gecent.core.motion.quadrants import (
     arc_sweep,
     goes_linear,
@@ -66,7 +68,8 @@ class CircularMotion(ArcPieces):
         self.step = machine.number_option(14)
         self.available = machine.number_option(9) == 1
         self.epsilon = machine.number_option(5)
-        self.depmax = machine.number_option(4)
+        self.depmax = machine.number_option(4)  # a chord is a straight move (option 262)
+        self.circular_depmax = circular_departure(machine)
         self.three_axes = machine.number_option(22) == 111
         self.machine = machine
         self.centre: tuple[float, float, float] | None = None  # CIRDAT, rounded to the step
@@ -163,7 +166,7 @@ class CircularMotion(ArcPieces):
         moved = (centre[0] + tx, centre[1] + ty, centre[2] + tz)
         start = tuple(position.previous_part[:3])
         radius = hypot(start[u] - moved[u], start[v] - moved[v])
-        if radius > self.depmax:
+        if radius > self.circular_depmax:
             return False
         last = points[-1]
         if len(points) == 1 and self.whole:

@@ -30,7 +30,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, replace
 
 from gecent.core.cl.records import Statement, Word
-from gecent.core.errors import Diagnostic, InputError, NotYetSupported
+from gecent.core.errors import Diagnostic, InputError
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.machine.shuffle import decode_shuffle
 
@@ -100,7 +100,13 @@ def parse_cycle(
         warn(Diagnostic(f"CYCLE/{kind} IS PROCESSED AS CYCLE/{STAND_INS[kind]}", statement.where))
         kind = STAND_INS[kind]
     if kind not in CYCLE_TYPES or "," in kind:
-        raise NotYetSupported(f"CYCLE/{kind}", statement.where)
+        # CYCLGP's minor words are the manual's cycles (001 L30106-30130); any other is
+        # not a GECENT III cycle (docs/decisions.md, h4)
+        raise InputError(
+            f"CYCLE/{kind} is not a GECENT III cycle; the cycles are "
+            f"{', '.join(k for k in CYCLE_TYPES if ',' not in k)}, INHIBT and OFF",
+            statement.where,
+        )
     named: dict[str, float] = {}
     modifiers: list[str] = []
     bare: list[float] = []
@@ -131,7 +137,12 @@ def parse_cycle(
                     named[arg.name] = float(following)
                 index += 2
                 continue
-            raise NotYetSupported(f"CYCLE/{kind},{arg.name}", statement.where)
+            raise InputError(
+                f"CYCLE/{kind} does not take {arg.name}; it takes "
+                f"{', '.join((*COUPLETS, *FEED_UNITS))}"
+                + (f", {', '.join(('DWELL', *BORE_WAYS_OUT))}" if kind == "BORE" else ""),
+                statement.where,
+            )
         bare.append(float(arg))
         index += 1
     for name in ("DEPTH", "CLEAR", "STEP"):  # the fixed form's numbers, in this order

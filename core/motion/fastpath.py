@@ -79,6 +79,7 @@ class FastLinear:
             machine.number_option(1) == 0
             and not output.optimiser.segmenting
             and (not output.optimiser.multiplying or output.modern.direct_feed)
+            and output.optimiser.ijk_minimum <= 0  # (option 224 puts I, J, K in long moves)
             and not output.slide_limits.limits
             and output.feed_limits is None  # (FEDLIM's per-axis limits, option 25 < 0)
             and output.accel is None  # (A/D testing holds blocks, option 55 = 1)
@@ -86,6 +87,7 @@ class FastLinear:
             and not words.long_formatters
             and words.zero_rule != -2
             and words.zero_rule in (0.0, 1.0)
+            and not words.unpunched_g  # (option 147: the tape line differs from the words)
         )
         # the words a linear block can have, in the machine's output order: N, G, the axes
         # (internal axis, sign and diameter factor after SHUFFL), F

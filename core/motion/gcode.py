@@ -140,14 +140,22 @@ CIRCULAR_RANGES = (
 )
 
 
+def circular_departure(machine: MachineDefinition) -> float:
+    """The maximum departure of circular interpolation: option 223 when it gives one, else
+    option 4, which then bounds lines and circles alike (001 L26719-26728)."""
+    separate = machine.number_option(223)
+    return separate if separate > 0 else machine.number_option(4)
+
+
 class CircularCodes:
     """SELGCR: the circular G code for the radius band and direction, skipping absent codes
-    upward as SELG does; fatal 142 beyond option 4, fatal 144 with no code."""
+    upward as SELG does; fatal 142 beyond the circular maximum departure (option 223, or
+    option 4), fatal 144 with no code."""
 
     def __init__(self, machine: MachineDefinition) -> None:
         metric = machine.number_option(138) == 1
-        self.limits = (*METRIC_LIMITS, machine.number_option(4)) if metric else INCH_LIMITS
-        self.depmax = machine.number_option(4)
+        self.depmax = circular_departure(machine)
+        self.limits = (*METRIC_LIMITS, self.depmax) if metric else INCH_LIMITS
         self.codes: dict[bool, tuple[DimensionCode | None, ...]] = {}
         for clockwise in (True, False):
             codes: list[DimensionCode | None] = []
@@ -166,7 +174,9 @@ class CircularCodes:
 
     def select(self, radius: float, clockwise: bool) -> DimensionCode:
         if radius > self.depmax:
-            raise FatalError(142, f"radius {radius:g} exceeds option 4")
+            raise FatalError(
+                142, f"radius {radius:g} exceeds the maximum departure {self.depmax:g}"
+            )
         code = _covering(self.codes[clockwise], self.limits, radius)
         if code is None:
             raise FatalError(144, f"no TABLEG code for a radius of {radius:g}")

@@ -28,12 +28,17 @@ from math import acos, ceil, degrees, isfinite, radians, sqrt
 import numpy as np
 from gecent.core.cl.records import Motion, MotionSubtype
 from gecent.core.errors import Diagnostic, FatalError, InputError, NotYetSupported, SourcePosition
+from gecent.core.feed.limits import HEAD_CLASSES
 from gecent.core.machine.definition import ROTARY_CELLS
 from gecent.core.motion.gcode import RotaryCodes
 from gecent.core.motion.guard import check_segments
 from gecent.core.motion.linear import godlta_delta
 from gecent.core.motion.linearity import LinearityLimit, LinearityTest
-from gecent.core.motion.rotary import UNITS_PER_DEGREE
+from gecent.core.motion.rotary import (
+    SECOND_HEAD_CLASSES,
+    UNITS_PER_DEGREE,
+    travel_limit_warning,
+)
 from gecent.core.motion.rounding import to_steps
 from gecent.core.motion.segments import segment_count, segment_place, segments
 from gecent.core.multiaxis.chain import KinematicChain, Unreachable
@@ -114,6 +119,19 @@ class MultiaxisMotion:
             axis.column for axis in (self.chain.axes if self.chain else ()) if axis.limits
         )
         self.modern_absolute = machine.number_option(251) == 1
+        # options 149, 150: the head's rotation limits, on a class whose DBFSEG(6) is a head
+        self.head_limited = (
+            self.chain is None
+            and transform.number in HEAD_CLASSES
+            and (machine.number_option(149) != 0 or machine.number_option(150) != 0)
+        )
+        # options 199, 200: the second rotary head's limits, on a class whose head turns
+        # about two axes, the second in DBFSEG(7) (CLASS 3's A and B, CLASS 6's A on B)
+        self.second_head_limited = (
+            self.chain is None
+            and transform.number in SECOND_HEAD_CLASSES
+            and (machine.number_option(199) != 0 or machine.number_option(200) != 0)
+        )
         self.where: SourcePosition | None = None
         self.tool_axis: tuple[float, float, float] = (0.0, 0.0, 1.0)
         # the last machine point (radians); none before the first (a five-axis machine's
@@ -373,6 +391,26 @@ class MultiaxisMotion:
         turns = [r - p for r, p in zip(rotary, self.rotary_previous, strict=True)]
         if not any(departures) and not any(turns) and not self._unstated():
             return  # no move (001 L4283-4290)
+        if self.head_limited and turns[0]:
+            scale = self.rotary_step / self.per_degree  # rotary steps to degrees
+            text = travel_limit_warning(
+                self.state.machine,
+                self.rotary_previous[0] * scale,
+                turns[0] * scale,
+                device="HEAD",
+            )
+            if text:
+                self.warn(Diagnostic(text, record.where))
+        if self.second_head_limited and turns[1]:
+            scale = self.rotary_step / self.per_degree
+            text = travel_limit_warning(
+                self.state.machine,
+                self.rotary_previous[1] * scale,
+                turns[1] * scale,
+                device="SECOND HEAD",
+            )
+            if text:
+                self.warn(Diagnostic(text, record.where))
         count = segment_count(departures + turns, [self.depmax] * 3 + [self.rotmax] * len(turns))
         if count > 1:
             check_segments(count, self.state.max_segments, record.where, "move")

@@ -26,9 +26,15 @@ passes them, and this module outputs the finished arc through the transform clas
   SELGRO's, a rotary departure beyond the circular code's rotary range taking the circular
   band that covers it (W24: TABLEG(21) CLW, (31) CCLW; core/motion/gcode.py's
   :func:`circle_code`).
-* D and E (DBFSEG 16, 17), the rotary "supplementary constants", are not computed: the
-  manual gives no formula (open question 14). An arc that turns a rotary axis is output
-  with the rotary departures alone, and a warning says D and E are missing.
+* D and E (DBFSEG 16, 17), the rotary "supplementary constants", the "equivalent of rotary
+  axes 'arc center offsets'" (001 L1830-1842; open question 14, docs/decisions.md h4): as
+  a circle's interpolator turns its centre offsets into the slides' rates, it turns a
+  constant into a rotary axis's rate in proportion to the angle, so the constant is the
+  rotary axis's "radius": the block's rotary departure over its sweep in radians
+  (|dA| / theta: D with A, DBFSEG 6; E with B, DBFSEG 7), unsigned as I, J, K are, in the
+  rotary register's units. They go out on a machine whose registers 16 and 17 are D and
+  E; a control without them moves the rotary axes in proportion to the angle itself (the
+  motion _follows checks), and the blocks carry the rotary departures alone.
 """
 
 from __future__ import annotations
@@ -39,6 +45,7 @@ import numpy as np
 from gecent.core.errors import Diagnostic, FatalError, InputError, NotYetSupported
 from gecent.core.motion.arc_pieces import Arc
 from gecent.core.motion.circle import PLANES, CircularMotion
+from gecent.core.motion.gcode import circular_departure
 from gecent.core.motion.multiaxis import NOT_UNIT, UNIT_TOLERANCE, MultiaxisMotion, PartPoint
 from gecent.core.motion.quadrants import arc_sweep, goes_linear, quadrant_crossings
 from gecent.core.motion.rounding import to_steps
@@ -46,10 +53,8 @@ from gecent.core.motion.segments import segment_count
 from gecent.core.output.block import Block, Code
 
 SAMPLES_PER_QUADRANT = 16  # the arc is checked at this many points per 90 degrees (8 at least)
-NO_D_E = (
-    "MULTIAXIS CIRCLE TURNS A ROTARY AXIS: SUPPLEMENTARY CONSTANTS D, E ARE NOT OUTPUT "
-    "(THE MANUAL GIVES NO FORMULA)"
-)
+# the supplementary constants' registers by the rotary register they go with (001 L1839-1842)
+SUPPLEMENTARY = {6: (16, "D"), 7: (17, "E")}
 
 Axis = tuple[float, float, float]
 
@@ -83,7 +88,7 @@ class MultiaxisCircle:
         self.circle = circle
         machine = motion.state.machine
         self.step = motion.step
-        self.depmax = machine.number_option(4)
+        self.depmax = circular_departure(machine)  # the radius test of a circular block
 
     def finish(self, arc: Arc) -> None:
         try:
@@ -264,8 +269,9 @@ class MultiaxisCircle:
         self.circle.select_plane(plane, self._arc.record.number)
         centre_steps = [0, 0, 0]
         centre_steps[u], centre_steps[v] = to_steps(centre[0], step), to_steps(centre[1], step)
-        turned = False
+        constants = self._constant_cells()
         previous_offset = first
+        previous_fraction = 0.0
         for index, fraction in enumerate(corners):
             point = start + fraction * (end - start)
             if fraction < 1.0:
@@ -305,7 +311,11 @@ class MultiaxisCircle:
                 for axis in (u, v):
                     block.cells[8 + axis] = abs(centre_steps[axis] - position.previous[axis]) * step
                 block.radius = radius
-                turned = turned or any(turns)
+                theta = (fraction - previous_fraction) * sweep  # this block's sweep (radians)
+                for cell, steps in zip(motion.cells, turns, strict=True):
+                    if steps and cell in constants and theta > 0:
+                        block.cells[constants[cell]] = abs(steps) * motion.rotary_step / theta
+            previous_fraction = fraction
             motion.emit(block)
             position.present[:3] = linear
             position.present_part[:] = list(part)
@@ -318,8 +328,17 @@ class MultiaxisCircle:
             previous_offset = offset
         motion.singular = singular
         motion.tool_axis = self._axes[1]
-        if turned:
-            motion.warn(Diagnostic(NO_D_E, self._arc.record.where))
+
+    def _constant_cells(self) -> dict[int, int]:
+        """The rotary cells whose supplementary constant the machine has a register for:
+        DBFSEG 16 = D (with A, cell 6), 17 = E (with B, cell 7), by their letters, since a
+        machine may give those locations other registers (MACH40's 17 is MACF40's H)."""
+        registers = self.motion.state.machine.registers
+        return {
+            rotary: cell
+            for rotary, (cell, letter) in SUPPLEMENTARY.items()
+            if registers.formats[cell] is not None and registers.letters[cell] == letter
+        }
 
     def _under_rotmax(
         self, corners: list[float], start: np.ndarray, end: np.ndarray

@@ -19,17 +19,20 @@ A hole whose tool axis is not the one the tool stands at (a five-axis hole patte
 clearance level along the old axis after the hole before, goes at rapid to the new hole's
 clearance point along the NEW axis (the level it leaves the hole at: R, RETURN's level),
 the kinematic chain turning the rotary axes on the way, and drills along the new axis from
-there. OUT (which stays at the bottom) and IN (which withdraws along the axis in force)
-would turn the tool inside a hole: not yet supported.
+there; OUT goes to the new hole's R point and drills in, staying at the bottom; IN
+withdraws along the axis in force, as it does, then goes at rapid to the point at its level
+along the new axis. A tool CYCLE/OUT left at the bottom of a hole cannot turn there: a hole
+on a new axis then is bad input (take it out with CYCLE/IN first).
 """
 
 from __future__ import annotations
 
 from dataclasses import replace
-from math import isfinite, sqrt
+from math import dist, isfinite, sqrt
+from weakref import WeakKeyDictionary
 
 from gecent.core.cl.records import Motion, MotionSubtype
-from gecent.core.errors import InputError, NotYetSupported
+from gecent.core.errors import InputError
 from gecent.core.feed.rapid import RapidTraverse
 from gecent.core.motion.cycles import CYCLE_TYPES, Cycle, Leg, cycle_legs
 from gecent.core.motion.guard import check_segments
@@ -81,13 +84,15 @@ def tool_axis_legs(
     axis: Vector,
     first_level: float,
     standing: Vector | None = None,
+    left_in: Vector | None = None,
 ) -> list[tuple[tuple[float, ...], Leg]]:
     """The moves that drill ``hole`` (its top, a CL point) along the unit tool ``axis`` from
     ``at``: each leg of core/motion/cycles.py worked out in the hole's frame, with its end
     carried back to a CL point with the tool axis (x, y, z, i, j, k). ``first_level``: the
     level along the axis the cycle started from (RETURN,0). ``standing``: the tool axis the
     tool is at; when the hole's differs, the first leg is a rapid to the hole's clearance
-    point along the new axis (where the hole's way out ends), the tool turning on the way."""
+    point along the new axis (where the hole's way out ends), the tool turning on the way.
+    ``left_in``: the top of the hole CYCLE/OUT left the tool in, which IN withdraws from."""
     e1, e2, _ = hole_frame(axis)
 
     def framed(p: Vector) -> Vector:
@@ -101,15 +106,27 @@ def tool_axis_legs(
     start, top = framed(at), framed(hole)
     legs = []
     if standing is not None and turns_the_tool(axis, standing):
-        if CYCLE_TYPES[cycle.kind][0] in ("stay", "withdraw"):
-            raise ValueError(f"CYCLE/{cycle.kind} cannot turn the tool between holes")
-        # the clearance point: where this hole's way out ends (its last leg), R or RETURN's
-        clearance = cycle_legs(along, top, top, first_level)[-1].point
+        way_out = CYCLE_TYPES[cycle.kind][0]
+        if way_out == "withdraw":
+            # IN: out along the axis the tool stands at, as IN withdraws, then at rapid to
+            # the point at its level along the new axis, the tool turning on the way
+            out_of = left_in if left_in is not None else hole
+            withdrawal = tool_axis_legs(cycle, at, out_of, standing, first_level)[0]
+            arrival = cycle_legs(along, top, top, first_level)[0].point
+            return [withdrawal, (carried(arrival), Leg(arrival, rapid=True))]
+        # the clearance point: where this hole's way out ends (its last leg), R or RETURN's;
+        # OUT stays at the bottom, so its R point (its first leg from the top)
+        clearance = cycle_legs(along, top, top, first_level)[0 if way_out == "stay" else -1].point
         legs.append((carried(clearance), Leg(clearance, rapid=True)))
         start = clearance
     for leg in cycle_legs(along, start, top, first_level):
         legs.append((carried(leg.point), leg))
     return legs
+
+
+# where CYCLE/OUT left the tool (the bottom, and the top of that hole), per multiaxis
+# element: a MultiaxisHoles is made for each record, the tool stays in the hole across them
+_LEFT_IN_HOLE: WeakKeyDictionary[MultiaxisMotion, tuple[Vector, Vector]] = WeakKeyDictionary()
 
 
 class MultiaxisHoles:
@@ -147,18 +164,27 @@ class MultiaxisHoles:
                 axis = self._axis(record, point, standing)
             if first_level is None:
                 first_level = _dot(at, axis)
-            if turns_the_tool(axis, standing) and CYCLE_TYPES[cycle.kind][0] in (
-                "stay",
-                "withdraw",
-            ):
-                raise NotYetSupported(
-                    f"CYCLE/{cycle.kind} on a hole whose tool axis ({axis[0]:.6g}, "
-                    f"{axis[1]:.6g}, {axis[2]:.6g}) is not the one the tool stands at "
-                    f"({standing[0]:.6g}, {standing[1]:.6g}, {standing[2]:.6g}): the tool "
-                    "would turn at the bottom of a hole",
+            bottom, top = _LEFT_IN_HOLE.get(self.multiaxis, (None, None))
+            in_hole = bottom is not None and dist(at, bottom) < 1e-9
+            withdraws = CYCLE_TYPES[cycle.kind][0] == "withdraw"
+            if turns_the_tool(axis, standing) and in_hole and not withdraws:
+                raise InputError(
+                    f"CYCLE/{cycle.kind}: the hole's tool axis ({axis[0]:.6g}, {axis[1]:.6g}, "
+                    f"{axis[2]:.6g}) is not the one the tool stands at ({standing[0]:.6g}, "
+                    f"{standing[1]:.6g}, {standing[2]:.6g}), and CYCLE/OUT left the tool at the "
+                    "bottom of the hole before, where it cannot turn: take it out first "
+                    "(CYCLE/IN)",
                     record.where,
                 )
-            self._drill(record, cycle, axis, standing, at, hole, first_level)
+            self._drill(
+                record, cycle, axis, standing, at, hole, first_level, top if in_hole else None
+            )
+            if CYCLE_TYPES[cycle.kind][0] == "stay":
+                tx, ty, tz = position.translation
+                here = position.previous_part
+                _LEFT_IN_HOLE[self.multiaxis] = ((here[0] - tx, here[1] - ty, here[2] - tz), hole)
+            else:
+                _LEFT_IN_HOLE.pop(self.multiaxis, None)
         assert first_level is not None
         return first_level
 
@@ -181,12 +207,13 @@ class MultiaxisHoles:
         at: Vector,
         hole: Vector,
         first_level: float,
+        left_in: Vector | None = None,
     ) -> None:
         if cycle.kind == "DEEP" and cycle.step:
             pecks = int(min(abs(cycle.depth / cycle.step), 1e18))
             check_segments(pecks, self.state.max_segments, record.where, "deep-hole cycle")
         machine = self.state.machine
-        for point, leg in tool_axis_legs(cycle, at, hole, axis, first_level, standing):
+        for point, leg in tool_axis_legs(cycle, at, hole, axis, first_level, standing, left_in):
             if leg.dwell:
                 block = self.output.dwell(leg.dwell)
                 block.record = record.number

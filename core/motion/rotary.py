@@ -53,6 +53,11 @@ class RotarySystem(Protocol):
 
 
 CLW, CCLW = 1, -1
+ROTATION_LIMIT_OPTIONS = {"TABLE": (220, 221), "HEAD": (149, 150)}  # lower, upper (degrees)
+# options 199, 200 (001 L26569-26579): the second rotary head's limits, degrees as 149/150
+ROTATION_LIMIT_OPTIONS["SECOND HEAD"] = (199, 200)
+# the multiaxis classes whose head turns about two axes, the second in DBFSEG(7)
+SECOND_HEAD_CLASSES = frozenset({3, 6})
 HEAD_CELL, TABLE_CELL = ROTARY_CELLS[:2]  # DBFSEG(6) head, DBFSEG(7) table (001 L5600-5606)
 UNITS_PER_DEGREE = {0.0: 1 / 360, 1.0: 1.0, -1.0: 100 / 360}  # option 118
 
@@ -216,9 +221,13 @@ class RotaryElement:
             direction=direction,
             clw_increases=self.clw_increases,
         )
-        if request.cell == TABLE_CELL:
+        if request.cell in (TABLE_CELL, HEAD_CELL):
             text = travel_limit_warning(
-                machine, self.positions[cell], move.travel, self.clw_increases
+                machine,
+                self.positions[cell],
+                move.travel,
+                self.clw_increases,
+                "TABLE" if request.cell == TABLE_CELL else "HEAD",
             )
             if text:
                 self.warn(Diagnostic(text, statement.where))
@@ -346,12 +355,24 @@ def parse_rotate(statement: Statement, machine: MachineDefinition) -> RotateRequ
 
 
 def travel_limit_warning(
-    machine: MachineDefinition, previous: float, travel: float, clw_increases: bool = True
+    machine: MachineDefinition,
+    previous: float,
+    travel: float,
+    clw_increases: bool = True,
+    device: str = "TABLE",
 ) -> str | None:
     """Options 220 and 221: the table turns between these scale readings (degrees; both 0:
-    no limits, 001 L26698-26708). The manual gives no action, so a move that passes
-    outside them is warned about, as a slide limit is (option 110), and still made."""
-    lower, upper = machine.number_option(220), machine.number_option(221)
+    no limits, 001 L26698-26708); options 149 and 150 the head (001 L26154-26166). The
+    manual gives no action, so a move that passes outside them is warned about, as a slide
+    limit is (option 110), and still made."""
+    # (each pair read by number: tools/checklist.py finds the options a module reads)
+    if device == "HEAD":
+        lower, upper = machine.number_option(149), machine.number_option(150)
+    elif device == "SECOND HEAD":
+        lower, upper = machine.number_option(199), machine.number_option(200)
+    else:
+        lower, upper = machine.number_option(220), machine.number_option(221)
+    low_option, high_option = ROTATION_LIMIT_OPTIONS[device]
     if lower == 0 and upper == 0:
         return None
     end = previous + (1 if clw_increases else -1) * travel
@@ -360,8 +381,8 @@ def travel_limit_warning(
     if low >= lower + 360.0 * turns - 1e-9 and high <= upper + 360.0 * turns + 1e-9:
         return None
     return (
-        f"TABLE ROTATION LIMIT HAS BEEN EXCEEDED ({lower:g} TO {upper:g} DEGREES, "
-        "OPTIONS 220, 221) *** WARNING"
+        f"{device} ROTATION LIMIT HAS BEEN EXCEEDED ({lower:g} TO {upper:g} DEGREES, "
+        f"OPTIONS {low_option}, {high_option}) *** WARNING"
     )
 
 

@@ -127,9 +127,13 @@ class AbsoluteRotary:
             direction=request.direction,
             clw_increases=self.clw_increases,
         )
-        if request.cell == TABLE_CELL:
+        if request.cell in (TABLE_CELL, HEAD_CELL):
             text = travel_limit_warning(
-                self.state.machine, previous, move.travel, self.clw_increases
+                self.state.machine,
+                previous,
+                move.travel,
+                self.clw_increases,
+                "TABLE" if request.cell == TABLE_CELL else "HEAD",
             )
             if text:
                 self.warn(Diagnostic(text, statement.where))

@@ -11,9 +11,8 @@ in core/motion/rotary.py.
   the up position) up, turning CLW (TABLEM 83) or CCLW (84), as programmed or the shorter
   way (MINMOV, |option 88| pockets); the pocket number goes in the T register, CODE -1.
   Both are positioning-machine routines (restriction "OPTAB(1) must equal 1 or 2").
-* ROTATE/TURRET: bad input on a contouring machine (ROTUR and ROTDRF are the positioning
-  and drafting overlays'); not yet supported on those, whose blocks the manual leaves
-  undefined (rotate_turret).
+* ROTATE/TURRET: bad input on a contouring machine (rotate_turret); ROTUR and ROTDRF, the
+  positioning and drafting machines' turrets, are in core/motion/rotary_turret.py.
 * ROTATE/TABLE, OFF | CLW | CCLW [, RPM, s] [, RANGE, n]: a table that spins. The speed
   nearest s among the table speeds SRTAB(141 ..) (option 179 ranges of option 180; no RPM:
   option 181's) goes in DBFSEG(17), the direction's M code (TABLEM 83, 84; OFF: TABLEM 50)
@@ -31,7 +30,7 @@ from typing import NoReturn, Protocol, runtime_checkable
 
 from gecent.core.absent import ABSENT
 from gecent.core.cl.records import Statement, Word
-from gecent.core.errors import Diagnostic, InputError, NotYetSupported
+from gecent.core.errors import Diagnostic, InputError
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.machine.loader import TABLE_SPEED_CELL
 from gecent.core.output.block import Block, Code
@@ -154,32 +153,16 @@ DRAFTING = 3  # option 132: the drafting overlay GEDRAF, where ROTDRF is
 
 
 def rotate_turret(statement: Statement, machine: MachineDefinition) -> NoReturn:
-    """ROTATE/TURRET: ROTATE (RTATGB) hands it to ROTDRF on a drafting machine and to ROTUR
-    otherwise (001 L36055-36095). ROTUR is in the positioning overlay GEPOS and turns a
-    spindle turret for tool pickup or unload (L36345-36382); a contouring machine has
-    neither, its turret being the lathe's TURRET statement ("the TURRET statement
-    (contouring)", option 96, L25532). Neither routine's block is defined: ROTDRF outputs
-    "a command block which rotates the turret" (L36097-36124) and ROTUR one through
-    STOREM, but the manual names no register or code for either, nor ROTUR's words."""
-    where = statement.where
-    if machine.number_option(132) == DRAFTING:
-        raise NotYetSupported(
-            "ROTATE/TURRET on a drafting machine (ROTDRF): the manual names no code for "
-            "its turret-index block",
-            where,
-        )
-    if machine.number_option(1) == 0:
-        raise InputError(
-            "ROTATE/TURRET turns a positioning machine's spindle turret (ROTUR, overlay "
-            "GEPOS) or a drafting machine's turret (ROTDRF, option 132 = 3); machine "
-            f"{machine.label} is a contouring machine (option 1 = 0): a contouring lathe "
-            "indexes its turret with TURRET/ (option 96)",
-            where,
-        )
-    raise NotYetSupported(
-        "ROTATE/TURRET on a positioning machine (ROTUR): the manual gives neither the "
-        "statement's words nor the code of the turret's block",
-        where,
+    """ROTATE/TURRET on a contouring machine: neither ROTUR (GEPOS, a positioning
+    machine's spindle turret, L36345-36382) nor ROTDRF (GEDRAF) is there, its turret being
+    the lathe's TURRET statement ("the TURRET statement (contouring)", option 96, L25532).
+    The machines that have the routines turn their turrets in core/motion/rotary_turret.py."""
+    raise InputError(
+        "ROTATE/TURRET turns a positioning machine's spindle turret (ROTUR, overlay "
+        "GEPOS) or a drafting machine's turret (ROTDRF, option 132 = 3); machine "
+        f"{machine.label} is a contouring machine (option 1 = 0): a contouring lathe "
+        "indexes its turret with TURRET/ (option 96)",
+        statement.where,
     )
 
 

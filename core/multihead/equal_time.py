@@ -4,6 +4,10 @@ both heads; the longer move is split (SPLIT, CIRSEG), or, below the tape-reader 
 TMAX or within option 151's band, the quicker head is slowed (Rule 2). The arithmetic is
 core/multihead/split.py; this module turns command blocks into its moves and its pieces
 back into command blocks, in steps that add up exactly to the move split.
+
+A turret corrective move is a line here (001 L7676-7677) and is split as one; its pieces
+keep the point the correction leaves the tool at, so that each goes out as a correction
+(CODE -3 alone, +-14 beside the other head's move) and none is summed.
 """
 
 from __future__ import annotations
@@ -151,7 +155,13 @@ class HeadMoves:
                 if best is None or sweep < best[0]:
                     best = (sweep, (centre[0], centre[1], centre[2]))
         if best is None:
-            raise NotYetSupported("merging a circle whose centre words do not fit its ends")
+            # the centre words are the first pass's own, made from the CIRCLE record (the
+            # part program gives none): a misfit is gecent's inconsistency, an internal
+            # error (core/multihead/post.py), not bad input and not a form to build
+            raise RuntimeError(
+                f"the centre words of the circle of CL record {block.record} do not fit its "
+                "ends (merging it to equal times)"
+            )
         return best[1]
 
     def block(self, move: Move | None) -> Block | None:
@@ -188,8 +198,13 @@ class HeadMoves:
         piece.cells = list(source.cells)
         piece.steps = tuple(steps)
         assert source.position is not None
-        after = self.remaining + [0] * (len(source.position) - len(self.remaining))
-        piece.position = tuple(p - a for p, a in zip(source.position, after, strict=False))
+        if source.code is Code.TURRET_CORRECTION:
+            # the turret centre moves, the tool's point does not: every piece of a
+            # correction keeps it (not summed, 001 L9225-9233)
+            piece.position = source.position
+        else:
+            after = self.remaining + [0] * (len(source.position) - len(self.remaining))
+            piece.position = tuple(p - a for p, a in zip(source.position, after, strict=False))
         for axis, count in enumerate(steps):
             piece.cells[3 + axis] = count * self.step
         if move.arc is not None:

@@ -5,6 +5,10 @@ finished block is dumped onto the head's scratch tape instead of being printed a
 punched. Records before the first SELECT/HEAD (PARTNO, MACHIN, COMBIN, ...) and FINI go
 to both heads, as the manual's example has a PARTNO, a FROM and an END on each tape
 (001 L2214-2300).
+
+With macros (the machine's macro table or MACFUN) each head's run reads its own records
+from start to end through its own macro engine, so that a macro's look-ahead runs along
+that head's records (SELECT/HEAD routes them before the runs start).
 """
 
 from __future__ import annotations
@@ -12,6 +16,7 @@ from __future__ import annotations
 from collections.abc import Callable, Iterable, Iterator
 
 from gecent.core.cl.records import Fini, Motion, Record, Statement, Word
+from gecent.core.cl.stream import Lookahead
 from gecent.core.dump import state_dump
 from gecent.core.errors import (
     Diagnostic,
@@ -21,6 +26,7 @@ from gecent.core.errors import (
     InternalError,
     NotYetSupported,
     RunStopped,
+    SourcePosition,
 )
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.multihead.dump import ScratchTape
@@ -44,6 +50,20 @@ def combined_program(records: Iterable[Record]) -> bool:
     return False
 
 
+def multihead_flag(machine: MachineDefinition) -> bool:
+    """Option 191 = 1 (001 L26501-26510): the machine sets MULTHD itself, every program on
+    it is a multihead one without a COMBIN/ statement. A machine of one head cannot."""
+    if machine.number_option(191) != 1:
+        return False
+    if len(machine.heads) < MAX_HEADS:
+        raise InputError(
+            f"option 191 = 1 sets the multihead flag MULTHD, but machine {machine.label} has "
+            "one head (its machine file has no [heads.2] register table)",
+            SourcePosition(machine.origin),
+        )
+    return True
+
+
 class HeadSinks(Sinks):
     """A head run's one sink, its scratch tape: blocks go there unconverted (no tape line
     yet: the merge pass makes it with the head's registers)."""
@@ -52,11 +72,15 @@ class HeadSinks(Sinks):
         super().__init__([tape])
         self.tape = tape
 
+    # (through ``sinks``, not ``tape``: a macro's look-ahead copies the run with a Sinks
+    # of no sink in its place, core/macros/lookahead.py, and these methods come with it)
     def emit(self, block: Block) -> None:
-        self.tape.block(block, None)
+        for sink in self.sinks:
+            sink.block(block, None)
 
     def emit_known(self, block: Block, line: str) -> None:
-        self.tape.block(block, None)
+        for sink in self.sinks:
+            sink.block(block, None)
 
 
 class FirstPass:
@@ -81,8 +105,6 @@ class FirstPass:
                 )
                 run.use_fast_path = run.fast_allowed = False  # every block must reach the tape
                 run.state.head = head
-                if run.macros is not None:
-                    raise NotYetSupported("macros in a multihead program (COMBIN)")
                 self.runs.append(run)
         except BaseException:
             self.remove()
@@ -90,18 +112,23 @@ class FirstPass:
         self.selected: Run | None = None  # None: every head (before the first SELECT/HEAD)
         self.record: Record | None = None
         self.used: set[int] = set()  # the heads SELECT/HEAD has named
+        self.combin = False  # COMBIN/ was given (else option 191 set MULTHD)
 
     def process(self, records: Iterator[Record]) -> RunResult:
         """Run the whole file through; the scratch tapes are ready to read after it. On
         any error they are removed and the error raised, naming the record."""
         try:
-            for record in records:
-                self.record = record
-                self._route(record)
+            if any(run.macros is not None for run in self.runs):
+                self._by_head(records)
+            else:
+                for record in records:
+                    self.record = record
+                    self._route(record)
             for run in self.runs:
                 run.end_of_input()
             if len(self.used) < MAX_HEADS:
-                raise FatalError(7003, "COMBIN/2 was given, but the program selects one head only")
+                given = "COMBIN/2 was given" if self.combin else "option 191 sets MULTHD"
+                raise FatalError(7003, f"{given}, but the program selects one head only")
         except (FatalError, RunStopped) as error:
             if error.where is None and self.record is not None:
                 error.where = self.record.where
@@ -126,11 +153,8 @@ class FirstPass:
         return self.runs[0].result
 
     def _route(self, record: Record) -> None:
-        if isinstance(record, Statement) and record.major == "SELECT":
-            args = record.args
-            if args and isinstance(args[0], Word) and args[0].name in ("HEAD", "HED"):
-                self._select(record)
-                return
+        if self._selects(record):
+            return
         if self.selected is None or isinstance(record, Fini):
             first, second = self.runs
             if not first.finished:
@@ -143,6 +167,64 @@ class FirstPass:
                     second.quiet = False
         else:
             self.selected.feed((record,), False, self.selected.builtin)
+
+    def _by_head(self, records: Iterator[Record]) -> None:
+        """With macros (a macro table or MACFUN for the machine): each head's run reads its
+        own records as a single-head run reads the file, through its macro engine, which
+        looks ahead along them (the manual's first pass processes the CL file "for both
+        heads separately", 001 L7170-7206). SELECT/HEAD routes every record as it is met,
+        so each head's records are known before its run starts."""
+        streams: tuple[list[Record], list[Record]] = ([], [])
+        both: set[int] = set()  # the records both heads process (by id)
+        for record in records:
+            self.record = record
+            if self._selects(record):
+                continue
+            if self.selected is None or isinstance(record, Fini):
+                both.add(id(record))
+                for stream in streams:
+                    stream.append(record)
+            else:
+                streams[self.selected.state.head - 1].append(record)
+        for run, stream in zip(self.runs, streams, strict=True):
+            self.selected = run
+            engine = run.macros
+            dispatch = run.builtin if engine is None else engine.dispatch
+            quiet = run is not self.runs[0]  # a record both heads post is warned about once
+
+            def heads_dispatch(
+                record: Record,
+                run: Run = run,
+                dispatch: Callable[[Record], None] = dispatch,
+                quiet: bool = quiet,
+            ) -> None:
+                run.quiet = quiet and id(record) in both
+                try:
+                    dispatch(record)
+                finally:
+                    run.quiet = False
+
+            try:
+                if engine is None:
+                    run.feed(stream, False, heads_dispatch)
+                else:
+                    engine.records = Lookahead(iter(stream))
+                    engine.start()
+                    run.feed(engine.records, False, heads_dispatch)
+            except BaseException:
+                self.record = run.current_record or self.record
+                raise
+
+    def _selects(self, record: Record) -> bool:
+        """COMBIN is noted; SELECT/HEAD,n selects head n (True: the record is routing)."""
+        if isinstance(record, Statement) and record.major == "COMBIN":
+            self.combin = True
+        if isinstance(record, Statement) and record.major == "SELECT":
+            args = record.args
+            if args and isinstance(args[0], Word) and args[0].name in ("HEAD", "HED"):
+                self._select(record)
+                return True
+        return False
 
     def _select(self, record: Statement) -> None:
         """SELECT/HEAD,n (SELHED, 001 L7214-7216): IHEAD = n."""

@@ -91,9 +91,15 @@ class MergePass:
         sinks: Sinks,
         warn: Callable[[Diagnostic], None],
     ) -> None:
-        common = int(machine.number_option(155))
-        if common not in (0, 1, 2, 3):
-            raise NotYetSupported(f"a common axis of the heads given as option 155 = {common}")
+        value = machine.number_option(155)
+        if value not in (0, 1, 2, 3):
+            # the option table knows only X, Y and Z (001 L26207-26217): a machine error
+            raise InputError(
+                f"option 155 = {value:g}: the heads' common axis is 0 (none), 1 (X), 2 (Y) "
+                "or 3 (Z)",
+                SourcePosition(machine.origin),
+            )
+        common = int(value)
         self.common_axis = common - 1 if common else None
         if self.common_axis == 2 and machine.number_option(22) in TWO_AXIS:
             raise InputError(
@@ -207,22 +213,14 @@ class MergePass:
                 tape.put_back(block)  # the next OP: the sequencing reads it again
                 return
             if mergeable(block):
-                if block.code is Code.TURRET_CORRECTION and not self._keeps_whole_moves:
+                if block.code is Code.TURRET_CORRECTION and self.common_axis is not None:
                     raise NotYetSupported(
-                        "a turret corrective move (CODE +-14) in a combined section whose "
-                        "moves are split to equal times (one feedrate register, option 139 "
-                        f"= 0) or share a common axis (option 155), CL record {block.record}"
+                        "a turret corrective move (CODE +-14) in a combined section on heads "
+                        f"that share a common axis (option 155), CL record {block.record}"
                     )
                 yield block
             else:
                 self.out.alone(block)
-
-    @property
-    def _keeps_whole_moves(self) -> bool:
-        """Two feedrate registers and no common axis: each move goes out whole, alone or
-        beside one of the other head's (a correction's pieces would need their own
-        points, which the split does not keep)."""
-        return self.two_feed_registers and self.common_axis is None
 
     def _by_summed_times(self, moves: list[Iterator[Block]]) -> list[Block | None] | None:
         """Two feedrate registers (001 L2040-2075): the first moves together, then always

@@ -23,8 +23,10 @@ from gecent.core.absent import ABSENT, or_zero
 from gecent.core.errors import Diagnostic, InputError, SourcePosition
 from gecent.core.feed.rapid import RapidTraverse
 from gecent.core.machine.definition import MachineDefinition
+from gecent.core.multihead.clearance import ClearanceTest
 from gecent.core.multihead.heads import head_machine
 from gecent.core.multihead.parking import Parking
+from gecent.core.multihead.registers import check_dwell_register, check_own_registers
 from gecent.core.output.block import TEXT_CODES, Block, Code
 from gecent.core.output.element import CIRCLE_CODES, OutputElement
 from gecent.core.output.sinks import Sinks
@@ -65,6 +67,7 @@ class HeadConverter:
         self.head = head
         self.machine = head_machine(machine, head)
         self.element = OutputElement(PostState(self.machine))
+        self.element.state.head = head  # (its dwells, in a common register: option 195)
         self.element.feed.strictly_below = True  # GMOTIN's GFDLIM (001 L32852-32912)
         self.letters = self.machine.registers.letters
         # the steps of each CL axis's smallest printed value: a piece of a split move is
@@ -179,11 +182,16 @@ class GMOUT:
                     f"head 1's letter {first[cell]} ([heads.2] regstr {cell})",
                     SourcePosition(machine.origin),
                 )
+        check_own_registers(machine)
+        dwell_cell = check_dwell_register(machine)
         self.shared = tuple(
             cell
             for cell in SHARABLE_CELLS
             if cell < len(first) and first[cell] and first[cell] == second[cell]
         )
+        self.dwell_cell = dwell_cell
+        if dwell_cell is not None and dwell_cell not in self.shared:
+            self.shared += (dwell_cell,)  # one dwell word in a combined block (option 195)
         self.circular_head: int | None = None  # PREPHD's code in effect (TABLEG 16 or 17)
         self.cut_minutes = 0.0
         self.dwell_minutes = 0.0
@@ -195,6 +203,7 @@ class GMOUT:
         self.rpm: dict[int, float | None] = {1: None, 2: None}
         self.positions: dict[int, tuple[int, ...] | None] = {1: None, 2: None}
         self.parking = Parking(self)
+        self.clearance = ClearanceTest(machine, self.heads[0].step)
 
     # -- sections ---------------------------------------------------------------------
 
@@ -300,6 +309,8 @@ class GMOUT:
                 # (001 L8707-8710): nothing of it goes on the tape but its S, T, M
                 for cell in range(2, 12):
                     half.cells[cell] = ABSENT
+                if self.dwell_cell is not None:
+                    half.cells[self.dwell_cell] = ABSENT
                 if primary == number:
                     primary = 3 - number  # the moving head's feed is the block's
         if self.one_g_register:
@@ -352,6 +363,8 @@ class GMOUT:
             elif part.position is not None:
                 self.parking.placed(head, part)
         self.sinks.emit(block)
+        if block.position is not None or block.halves is not None:
+            self.clearance.check(self.positions[1], self.positions[2], block.record, self.text)
 
     def _prephd(self, head: int, record: int | None) -> None:
         """PREPHD (001 L34994-35040, L8664-8669): the G code that lets this head cut the

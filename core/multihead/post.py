@@ -57,7 +57,10 @@ def post_multihead(
         # (the machine as the program left it: MACHIN may have changed options)
         merge = MergePass(first.runs[0].machine, first.tapes, sinks, warn)
         merge.run()
-        ending = Ending(True)
+        for note in sinks.reels.notes if sinks.reels is not None else ():
+            warn(note)  # the merged tape broken at option 134's maximum
+        # option 110 = +2 or 173 = 0 in head 1's run: the listing without the tape
+        ending = Ending(True, punch_suppressed=head_result.punch_suppressed)
     except FatalError as error:
         # the manual's fatal error: the listing is kept, with the dump (GEDUMP)
         if isinstance(error.partial, RunResult):  # met in the first pass, by a head's run
@@ -82,6 +85,7 @@ def post_multihead(
         sinks.close(ending)
     result.records = head_result.records
     result.partno = head_result.partno
+    result.punch_suppressed = head_result.punch_suppressed
     result.cut_minutes = merge.out.cut_minutes
     result.dwell_minutes = merge.out.dwell_minutes
     return result

@@ -100,6 +100,9 @@ class Block:
     # combined block's two halves, head 1's and head 2's (GMHBUF 1-20 and 21-40)
     head: int = 0
     halves: tuple[Block, Block] | None = None
+    # a tape reel starts at this block: 1 at the first PARTNO, n at the BREAK sequence's
+    # reel heading; the punch puts the readable identification there (core/output/reels.py)
+    reel: int = 0
 
     @classmethod
     def motion(

@@ -26,4 +26,4 @@ PLACED_CODES = MOTION_CODES | THREAD_CODES
 # blocks whose cells 3..10 are registers already, not internal axes for SHUFFL
 UNSHUFFLED = frozenset({Code.DWELL})
 # numeric blocks that get TABLEG(5) when they have no G and option 38 = +-1 (001 L24890-24907)
-G_FILLED = frozenset({Code.NONMOTION, Code.AUX_ONLY, Code.END, Code.DWELL})
+G_FILLED = frozenset({Code.NONMOTION, Code.AUX_ONLY, Code.END, Code.DWELL, Code.AUX_HEAD_IPM})

@@ -36,6 +36,11 @@ class Dwells:
     def _put_dwell(self, block: Block, seconds: float) -> None:
         machine = self.state.machine
         register = int(machine.number_option(57))
+        if self.state.head and machine.option(195) != 0:
+            # a multihead head's dwell in the heads' common dwell register (option 195)
+            from gecent.core.multihead.registers import shared_dwell_cell
+
+            register = shared_dwell_cell(machine) or register
         if register == 11:
             code = self.dwell_code
             block.cells[2] = ABSENT if code is None else float(code.code)

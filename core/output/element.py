@@ -17,7 +17,7 @@ from gecent.core.absent import ABSENT, Absent
 from gecent.core.errors import Diagnostic, InputError, SourcePosition
 from gecent.core.feed.accel import AccelerationTest, acceleration_test
 from gecent.core.feed.contour import FeedCommand, RapidCommand
-from gecent.core.feed.limits import FeedLimits
+from gecent.core.feed.limits import FeedLimits, HeadFeedLimit
 from gecent.core.feed.optimise import FeedOptimiser
 from gecent.core.feed.positioning import FeedType
 from gecent.core.motion.cycles import CYCLE_TYPES
@@ -166,6 +166,7 @@ class OutputElement(ModernProgram, OtherBlocks, Dwells, GeoutConversion):
         # option 25 < 0: each axis's own feed limits (FEDLIM); a multiaxis machine's
         # rotary axes have theirs after the linear ones
         self.feed_limits = FeedLimits(machine) if machine.number_option(25) < 0 else None
+        self.head_limit = HeadFeedLimit(machine) if HeadFeedLimit.applies(machine) else None
         # pass 1 of a multihead run (manual §3.4.8.1): OUTPUT finishes the block and dumps
         # it; the GEOUT conversion waits for the merge pass (core/multihead)
         self.dump_only = state.head != 0
@@ -379,6 +380,11 @@ class OutputElement(ModernProgram, OtherBlocks, Dwells, GeoutConversion):
             wanted, note = self.feed_limits.block_feed(block, wanted, path, feed.range)
             if note is not None:
                 self.diagnostics.append(Diagnostic(note, None))
+        if self.head_limit is not None:  # option 192, the rotary head's RPM
+            path = _arc_length(block, self.step) if block.code in CIRCLE_CODES else length
+            wanted, note = self.head_limit.block_feed(block, wanted, path)
+            if note is not None:
+                self.diagnostics.append(Diagnostic(note, None))
         multiplied = (
             self.optimiser.multiplied(block, wanted, code.gdimul, length, code.size_class)
             if self.optimiser.multiplying
@@ -386,6 +392,10 @@ class OutputElement(ModernProgram, OtherBlocks, Dwells, GeoutConversion):
             and not self.modern.direct_feed
             else None
         )
+        if self.optimiser.ijk_minimum > 0 and block.code is Code.LINEAR and not turn:
+            multiplied = self.optimiser.ijk_command(  # option 224, the 100S in metric
+                block, wanted, code.gdimul, length, code.size_class
+            )
         if self.modern.direct_feed:
             command, ipm, f_format = self._direct_feed(block), wanted, None
             if wanted != feed.ipm and feed.ipm > 0:

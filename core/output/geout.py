@@ -120,5 +120,10 @@ class GeoutConversion:
             self.words.previous_g = ABSENT  # a G04 or other G came between: repeat the motion G
         block.words = tuple((location, printed) for location, _, printed, _ in words)
         if block.punched:
-            punch = self.separator.join(letter + punched for _, letter, _, punched in words)
+            unpunched = self.words.unpunched_g  # option 147: G01/G11 printed, not punched
+            punch = self.separator.join(
+                letter + punched
+                for location, letter, _, punched in words
+                if not (location == 2 and unpunched and block.cells[2] in unpunched)
+            )
             block.punch = "/" + punch if block.skipped else punch

@@ -33,7 +33,10 @@ def leader_inches(requested: float) -> float:
 
 
 def leader_block(
-    machine: MachineDefinition, requested: float, record: int, where: SourcePosition | None
+    machine: MachineDefinition,
+    requested: float,
+    record: int | None,
+    where: SourcePosition | None,
 ) -> Block:
     if requested < 0:
         raise InputError(f"LEADER expects a length in inches >= 0, found {requested:g}", where)

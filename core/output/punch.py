@@ -25,6 +25,7 @@ from importlib import resources
 from gecent.core import tomldata
 from gecent.core.errors import FatalError, InputError
 from gecent.core.machine.definition import MachineDefinition
+from gecent.core.output.modern import modern_output
 
 CODES = ("eia", "ascii")
 NOT_PUNCHED = " ."
@@ -47,6 +48,7 @@ GLYPHS = {
     "O": "3e4141413e", "P": "7f09090906", "Q": "3e4151215e", "R": "7f09192946",
     "S": "4649494931", "T": "01017f0101", "U": "3f4040403f", "V": "1f2040201f",
     "W": "7f2018207f", "X": "6314081463", "Y": "0304780403", "Z": "6151494543",
+    "&": "3649552250", ":": "0036360000", "%": "2313086462",
 }  # fmt: skip
 LETTER_GAP = 1  # blank frames after each letter
 PARITY_CHANNEL = 0x80  # channel 8
@@ -64,6 +66,18 @@ def readable_parity(machine: MachineDefinition, code: str) -> str | None:
     if medium == 0 and machine.number_option(163) == 0:
         return ODD if code == "eia" else EVEN
     return None
+
+
+def identification_parity(machine: MachineDefinition, code: str) -> str | None:
+    """The parity of the readable PARTNO gecent punches at the head of each reel, or None
+    (docs/decisions.md): :func:`readable_parity`'s, with IDPART's restriction "GEOUT1
+    only" for BCD output (option 164 = 1, 001 L33577-33610), and never on a modern
+    control's tape, whose program frame has no letters made of holes."""
+    if modern_output(machine):
+        return None
+    if machine.number_option(20) == 0 and machine.number_option(164) != 1:
+        return None
+    return readable_parity(machine, code)
 
 
 def readable_frames(text: str, parity: str) -> bytes:
@@ -191,9 +205,10 @@ def unpunch(
     A run of leader frames becomes a line of the leader stand-in, each card of blank tape
     an empty line (in ASCII, whose leader is blank tape, blank tape reads as leader); the
     end-of-record code at the start of a block becomes the TMARK stand-in unless it is a
-    character of this code (ASCII's rewind stop is "%"). With ``readable`` the first
-    end-of-block code that ends no block opens the readable PARTNO, passed over to the
-    next one (:func:`read_readable` reads its letters)."""
+    character of this code (ASCII's rewind stop is "%"). With ``readable`` an
+    end-of-block code that ends no block opens a readable PARTNO (the first one, and each
+    new reel's after a tape break), passed over to the next one (:func:`read_readable`
+    reads its letters)."""
     codes = table(code)
     characters = {v: k for k, v in reversed(list(codes.items())) if len(k) == 1}
     if modern:  # blanks between words, and EIA's End of Record for "%"
@@ -215,7 +230,7 @@ def unpunch(
             lines.extend([""] * (run_length // CARD_FRAMES))
         run_length = 0
 
-    skipping = passed = False
+    skipping = False
     for frame in frames:
         if skipping:
             skipping = frame != end_of_block
@@ -227,8 +242,8 @@ def unpunch(
             run_length += 1
             continue
         close_run()
-        if frame == end_of_block and readable and not current and not passed:
-            skipping = passed = True
+        if frame == end_of_block and readable and not current:
+            skipping = True
         elif frame == end_of_block:
             lines.append("".join(current))
             current = []

@@ -5,7 +5,9 @@ tape line once and hands both to each sink: the tape image, the punched tape, th
 and the JSON lines. A sink writes at once into a temporary file beside its target; when the
 run ends, ``close`` renames it into place (``ok``) or removes it. A fatal error of the
 manual's §5.7 keeps the listing, with the GEDUMP dump at its end, and never the tape;
-option 110 = +2 after a slide limit keeps the listing and suppresses the tape and punch.
+option 110 = +2 after a slide limit, and option 173 = 0 (printed output only), keep the
+listing and suppress the tape and punch. The punch puts the readable PARTNO at the head
+of each reel; the reels of the BREAK sequence are counted here (core/output/reels.py).
 Nothing holds the blocks of the whole run, except the collecting sink that scripts and
 tests ask for explicitly.
 """
@@ -33,7 +35,8 @@ from gecent.core.output.files import AtomicFile
 from gecent.core.output.jsonlines import block_record
 from gecent.core.output.marks import stand_in
 from gecent.core.output.modern import modern_output
-from gecent.core.output.punch import Puncher
+from gecent.core.output.punch import Puncher, identification_parity
+from gecent.core.output.reels import Reels, tape_reels
 from gecent.core.output.tape import tape_line
 from gecent.core.plugins import PluginSet
 
@@ -42,7 +45,7 @@ from gecent.core.plugins import PluginSet
 class Ending:
     """How the run ended, for the sinks' ``close``: ``ok`` when it finished; ``dump`` is the
     GEDUMP after a fatal error (the listing keeps it); ``punch_suppressed`` is option
-    110 = +2 after a slide limit (no tape, no punch)."""
+    110 = +2 after a slide limit or option 173 = 0 (no tape, no punch)."""
 
     ok: bool
     punch_suppressed: bool = False
@@ -111,11 +114,19 @@ class TapeSink(LineSink):
 
 
 class PunchSink(LineSink):
-    """The punched tape in EIA RS-244 or ASCII RS-358 code, frame by frame."""
+    """The punched tape in EIA RS-244 or ASCII RS-358 code, frame by frame; ``parity`` is
+    the readable identification's at the head of each reel (None: none is punched)."""
 
-    def __init__(self, path: str | Path, puncher: Puncher) -> None:
+    def __init__(self, path: str | Path, puncher: Puncher, parity: str | None = None) -> None:
         self.puncher = puncher
+        self.parity = parity
         super().__init__(path)
+
+    def identify(self, text: str) -> None:
+        """The readable PARTNO (and reel number) in letters made of holes (GEPRE, 001
+        L9087-9101), bracketed by end-of-block codes; nothing for a blank PARTNO."""
+        if self.parity is not None and text.strip():
+            self.file.write(self.puncher.readable_partno(text, self.parity))
 
     def line(self, line: str) -> None:
         frames_of = self.puncher.frames_of
@@ -225,6 +236,8 @@ class Sinks:
         self.notes: list[Diagnostic] = []
         # the characters the punch can carry (None: no punch; the tape image is ASCII)
         self.punch_characters: frozenset[str] | None = None
+        self.reels: Reels | None = None  # the BREAK sequence (options 134, 135)
+        self.identified = False  # the first reel's readable PARTNO is punched
         self.closed = False
         for sink in sinks or []:
             self.add(sink)
@@ -241,18 +254,51 @@ class Sinks:
 
     def emit(self, block: Block) -> None:
         line = tape_line(block)
+        if block.reel:
+            self._new_reel(block.reel)
+        if line is not None and self.reels is not None:
+            self._on_reel(line, block.record)
         for sink in self.sinks:
             sink.block(block, line)
 
     def emit_known(self, block: Block, line: str) -> None:
         """A block whose tape line is known already (the fast path)."""
+        if self.reels is not None:
+            self._on_reel(line, block.record)
         for sink in self.sinks:
             sink.block(block, line)
 
     def emit_line(self, line: str) -> None:
         """A tape line alone, when :attr:`lines_only`."""
+        if self.reels is not None:
+            self._on_reel(line, None)
         for sink in self.line_sinks:
             sink.line(line)
+
+    def _on_reel(self, line: str, record: int | None) -> None:
+        """Count the line on its reel; one that would pass option 134's maximum goes on
+        a new reel, after a tape break (core/output/reels.py)."""
+        reels = self.reels
+        assert reels is not None
+        frames = reels.frames_of(line)
+        if reels.overflows(frames):
+            for block in reels.break_blocks(record, automatic=True):
+                self.emit(block)
+        reels.count(line, frames)
+
+    def _new_reel(self, number: int) -> None:
+        """A reel starts: 1 at the first PARTNO, n at a tape break's heading. The punch
+        puts the readable identification there (RDPART and REELNO, 001 L18108-18116)."""
+        if number == 1:
+            if self.identified:
+                return  # (a multihead program's PARTNO, once for each head)
+            self.identified = True
+        elif self.reels is not None:
+            self.reels.new_reel(number)
+        text = self.partno if number == 1 else f"{self.partno.strip()} REEL {number}"
+        for sink in self.sinks:
+            if isinstance(sink, PunchSink):
+                sink.identify(text)
 
     def close(self, ending: Ending) -> None:
         """Close every sink, even when one fails; the first failure is raised after."""
@@ -319,7 +365,9 @@ def output_sinks(
         if writer is not None and listing is not None:
             sinks.add(ListingSink(listing, writer))
         if puncher is not None and punch_to is not None:
-            sinks.add(PunchSink(punch_to[1], puncher))
+            parity = identification_parity(machine, punch_to[0])
+            sinks.add(PunchSink(punch_to[1], puncher, parity))
+        sinks.reels = tape_reels(machine)
         if json_stream is not None:
             sinks.add(JsonSink(json_stream, machine))
     except BaseException:

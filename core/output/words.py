@@ -6,17 +6,34 @@ and the option-51 rule for zero values."""
 from __future__ import annotations
 
 from gecent.core.absent import ABSENT, Absent
-from gecent.core.errors import FatalError, SourcePosition
+from gecent.core.errors import FatalError, InputError, SourcePosition
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.machine.regformat import decode_regfor
 from gecent.core.machine.shuffle import cell_map
 from gecent.core.output.block import Block, Code
 from gecent.core.output.format import FormatOverflow, RegisterFormatter
+from gecent.core.output.modern import modern_output
 
 NEVER_OUTPUT = frozenset({15, 19, 20})  # CODE, feed in IPM, speed in RPM: not registers
 ZERO_RULE_CELLS = frozenset({3, 4, 5, 6, 7, 8, 9, 10, 16})  # option 51 (001 L25024-25049)
 
 Word = tuple[int, str, str, str]  # location, letter, printed, punched
+
+
+def unpunched_g_codes(machine: MachineDefinition) -> frozenset[float]:
+    """Option 147 = 1 on a contouring machine: G01 and G11 are left off the punched tape
+    (the listing keeps them; 001 L26131-26139). The codes are the ones the option names,
+    whichever TABLEG cells hold them. A modern control needs its G01 after a G00, so the
+    option is bad input there."""
+    if machine.number_option(147) != 1 or machine.number_option(1) != 0:
+        return frozenset()
+    if modern_output(machine):
+        raise InputError(
+            "option 147 = 1 leaves G01 and G11 off the tape, which a modern control "
+            "(option 255 or 258 = 1) needs to leave rapid",
+            SourcePosition(machine.origin),
+        )
+    return frozenset({1.0, 11.0})
 
 
 class WordFormatter:
@@ -53,6 +70,7 @@ class WordFormatter:
         self.diameter = machine.number_option(260) == 1
         self.absolute_centre = machine.number_option(252) == 2
         self.zero_rule = machine.number_option(51)
+        self.unpunched_g = unpunched_g_codes(machine)
         # option 38 = 0 or +2: a G code equal to the last one output is left out; only in
         # blocks that move (``suppress``) both ways: 0's non-motion G is the block's command
         self.suppress_g = machine.number_option(38) in (0.0, 2.0)

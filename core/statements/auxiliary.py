@@ -60,15 +60,25 @@ def coolnt(run: Post, statement: Statement) -> None:
 
 def _stop(run: Post, statement: Statement, cell: int) -> None:
     """STOP (TABLEM(1)) and OPSTOP (TABLEM(2)): the code in a block by itself; the control
-    stops spindle and coolant, so both are off afterwards (001 L37970-37991)."""
+    stops spindle and coolant, so both are off afterwards (001 L37970-37991), unless it
+    restores them itself at the restart (option 136 = 1, 001 L25995-26007)."""
     if statement.args:
         raise InputError(f"{statement.major} takes no arguments", statement.where)
     code_by_itself(run, statement, cell, stop=True)
-    _spindle_and_coolant_off(run)
+    if not control_restores(run):
+        _spindle_and_coolant_off(run)
     run.state.modes.stopped = True
     run.state.conditions.respecified.clear()
     if run.machine.number_option(145) in (-1.0, -2.0):
         run.rapid.entrap()  # ENTRAP: the machine waits in rapid gear (001 L30953-30990)
+
+
+def control_restores(run: Post) -> bool:
+    """Option 136 = 1: after a programmed stop the control itself turns spindle and coolant
+    back to their former conditions (001 L25995-26007), so the post keeps them on. An
+    optional stop (M01) counts too: whether or not the operator's switch stops there, both
+    are in their former conditions when the program goes on (docs/decisions.md)."""
+    return run.machine.number_option(136) == 1
 
 
 def stop(run: Post, statement: Statement) -> None:
@@ -81,10 +91,14 @@ def opstop(run: Post, statement: Statement) -> None:
 
 def break_(run: Post, statement: Statement) -> None:
     """BREAK: an optional-stop block when the machine has one (TABLEM(2); the manual's
-    TABLEG(2) is a slip), then the tape may be broken there (001 L9273-9281)."""
-    if run.machine.m_code(2) is None:
-        return
-    _stop(run, statement, 2)
+    TABLEG(2) is a slip), then the tape is broken there once the reel has passed option
+    135's footage (001 L9273-9281, L25984-25994; core/output/reels.py)."""
+    if run.machine.m_code(2) is not None:
+        _stop(run, statement, 2)
+    reels = run.sinks.reels
+    if reels is not None and reels.breakable():
+        for block in reels.break_blocks(statement.number):
+            run.text_block(block)
 
 
 def code_by_itself(

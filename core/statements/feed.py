@@ -204,9 +204,13 @@ def feed_per_revolution(run: Post, statement: Statement) -> None:
 
 
 def _mode_ipm(run: Post, value: float, unit: Word | None, statement: Statement) -> float:
+    """The feed per minute; a feed without a unit word keeps the last mode, and the first
+    one takes option 35's assumed mode, 0 IPM or 1 IPR (001 L24823-24831)."""
     feed = run.state.feed
     if unit is not None:
         feed.per_revolution = unit.name in ("IPR", "MMPR")
+    elif feed.programmed is None:
+        feed.per_revolution = run.machine.number_option(35) == 1
     if not feed.per_revolution:
         return value
     feed.per_revolution_value = value

@@ -186,14 +186,18 @@ def saddle(run: Post, statement: Statement) -> None:
             f"(REGFOR({SADDLE_REGISTER}))",
             where,
         )
-    if run.state.sfm.active:
-        # SADSFM: "SADSFM = 1 for saddle SFM, SADSFM = 0 after SFM is called" (L36474-36478)
-        raise NotYetSupported("a saddle move under SFM (SADSFM, SFMO for the saddle)", where)
+    # under SFM, SADDLE calls SFMO (SADSFM, 001 L36474-36478, L36505): its radius is a CL
+    # coordinate or a fixed one (SFMRAD), which a saddle move changes neither of, so SFMO's
+    # sequence ends at once (a constant radius, L14230-14549) and the move goes out at the
+    # speed in force (docs/decisions.md, h4)
     step = machine.number_option(14)
     steps = to_steps(run.units.length(numbers[0]), step)
     if steps == 0:
         return  # no move: no block
-    feed = None if rapid else _saddle_feed(run, statement, numbers[1:], units)
+    feed, per_minute = (None, False) if rapid else _saddle_feed(run, statement, numbers[1:], units)
+    # CODE +15: "an auxiliary head motion having its feed command in IPM" (001 L1190-1193
+    # list; spec 01 CODE table): the F stays IPM; an IPR or rapid move stays a plain block
+    code = Code.AUX_HEAD_IPM if per_minute else Code.NONMOTION
     dwell = machine.number_option(87) if rapid else 0.0
     output = run.output
     if dwell > 0:
@@ -201,7 +205,7 @@ def saddle(run: Post, statement: Statement) -> None:
     if rapid:
         output.store_cell(SADDLE_RAPID_CELL, run.warn, where)
     for part in _segments(steps, machine.number_option(4), step):
-        block = Block(Code.NONMOTION, statement.number)
+        block = Block(code, statement.number)
         block.cells[SADDLE_REGISTER] = part * step
         if feed is not None:
             block.cells[FEED_REGISTER] = feed
@@ -210,9 +214,12 @@ def saddle(run: Post, statement: Statement) -> None:
         _dwell(run, statement, dwell)  # back to feed
 
 
-def _saddle_feed(run: Post, statement: Statement, given: list[float], units: list[str]) -> float:
+def _saddle_feed(
+    run: Post, statement: Statement, given: list[float], units: list[str]
+) -> tuple[float, bool]:
     """The saddle's F: f as given (option 84 when none), in the mode given (option 85 when
-    none, with the comment); an IPM feed is held to the feed range's limits."""
+    none, with the comment); an IPM feed is held to the feed range's limits. With it, True
+    for IPM (SADMOD = 1)."""
     machine = run.machine
     if given:
         feed = given[0]
@@ -238,7 +245,7 @@ def _saddle_feed(run: Post, statement: Statement, given: list[float], units: lis
         run.warn(Diagnostic(FEED_MODE_ASSUMED, statement.where))
         per_minute = assumed > 0
     if not per_minute:
-        return feed
+        return feed, False
     low, high = feed_limits(run)
     used = min(max(feed, low), high)
     if used != feed:
@@ -249,7 +256,7 @@ def _saddle_feed(run: Post, statement: Statement, given: list[float], units: lis
                 statement.where,
             )
         )
-    return used
+    return used, True
 
 
 def _segments(steps: int, maximum: float, step: float) -> list[int]:

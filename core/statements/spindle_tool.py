@@ -14,6 +14,11 @@ from gecent.core.motion.rotary_devices import (
     rotate_indexer,
     rotate_magazine,
 )
+from gecent.core.motion.rotary_turret import (
+    index_drafting_turret,
+    turn_spindle_turret,
+    turret_routine,
+)
 from gecent.core.plugins import PluginSet, get_plugins
 from gecent.core.statements.feed import feed_per_revolution
 
@@ -48,6 +53,12 @@ def rotate(run: Post, statement: Statement) -> None:
         return
     if device in MAGAZINE_WORDS:
         run.tool.position = rotate_magazine(statement, run.machine, run.output, run.tool.position)
+        return
+    if device == "TURRET" and turret_routine(run.machine) == "ROTDRF":
+        index_drafting_turret(statement, run.machine, run.output, run.state.pen_down, run.warn)
+        return
+    if device == "TURRET" and turret_routine(run.machine) == "ROTUR":
+        turn_spindle_turret(statement, run.tool)
         return
     if run.machine.number_option(1) != 0:
         _rotate_absolute(run, statement)

@@ -16,10 +16,20 @@ if TYPE_CHECKING:
 
 
 def partno(run: Post, statement: Statement) -> None:
+    """The first PARTNO starts the first tape reel: the punch puts the readable PARTNO
+    there (options 20, 161, 163; core/output/sinks.py). Option 169 = 1 leaves the PARTNO
+    itself (its "non-readable image") off the tape: printed only, as PPRINT is
+    (001 L26328-26338)."""
     text = statement.text or ""
-    if not run.result.partno:
+    first = not run.result.partno
+    if first:
         run.result.partno = run.sinks.partno = text
-    run.text_block(_comment(run, Code.PARTNO, statement.number, text, statement.where))
+    if run.machine.number_option(169) == 1:
+        block = Block(Code.PPRINT, statement.number, text)
+    else:
+        block = _comment(run, Code.PARTNO, statement.number, text, statement.where)
+    block.reel = 1 if first else 0
+    run.text_block(block)
 
 
 def pprint(run: Post, statement: Statement) -> None:

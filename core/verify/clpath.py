@@ -264,6 +264,8 @@ class _Reader:
         the last mode (as FEDRAT and a cycle's feed program it in the post)."""
         if unit is not None:
             self.per_revolution = unit.name in ("IPR", "MMPR")
+        elif self.feed is None:  # the first feed without one: option 35's assumed mode
+            self.per_revolution = self.machine.number_option(35) == 1
         self.feed = (self.units.per_minute(value, unit), self.per_revolution)
 
     def _kind(self) -> str:

@@ -18,11 +18,12 @@ from __future__ import annotations
 
 from collections.abc import Iterable
 from dataclasses import dataclass, field, replace
-from math import acos, degrees, radians, sqrt
+from math import acos, degrees, dist, radians, sqrt
 
 from gecent.core.cl.records import Motion, MotionSubtype, Record, Statement, Word
 from gecent.core.errors import SourcePosition
 from gecent.core.machine.definition import MachineDefinition
+from gecent.core.motion.cycles import CYCLE_TYPES
 from gecent.core.motion.multiaxis_cycles import tool_axis_legs
 from gecent.core.multiaxis.chain import KinematicChain, unit
 from gecent.core.multiaxis.transform import Kinematics
@@ -61,6 +62,7 @@ class _PoseReader(_Reader):
         self.rpm: float | None = None
         self.lengths: dict[int, float] = {}  # T code: LOADTL LENGTH (machine units)
         self._axes: list[Point] = []
+        self.left_in: tuple[Point, Point] | None = None  # CYCLE/OUT's bottom and hole top
 
     def _points(self, record: Motion) -> list[Point]:
         if record.subtype is MotionSubtype.GODLTA:
@@ -101,11 +103,18 @@ class _PoseReader(_Reader):
             if self.cycle_first_z is None:  # (the level along the tool axis, RETURN,0)
                 self.cycle_first_z = sum(a * b for a, b in zip(self.at, axis, strict=True))
             standing = self.poses[-1].axis if self.poses else (0.0, 0.0, 1.0)
-            legs = tool_axis_legs(self.cycle, self.at, hole, axis, self.cycle_first_z, standing)
+            bottom, top = self.left_in or (None, None)
+            in_hole = bottom is not None and dist(self.at, bottom) < 1e-9
+            left_in = top if in_hole else None
+            legs = tool_axis_legs(
+                self.cycle, self.at, hole, axis, self.cycle_first_z, standing, left_in
+            )
             for index, (point, leg) in enumerate(legs):
                 kind = "cycle-entry" if index == 0 else "rapid" if leg.rapid else "feed"
-                self._axes = [axis]
+                self._axes = [(point[3], point[4], point[5])]  # (IN's way out: the old axis)
                 self._target((point[0], point[1], point[2]), kind, record, None)
+            stays = CYCLE_TYPES[self.cycle.kind][0] == "stay"  # (the post's MultiaxisHoles)
+            self.left_in = (self.at, hole) if stays else None
         self._axes = []
 
     def _statement(self, statement: Statement) -> None:

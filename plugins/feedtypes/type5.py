@@ -1,5 +1,5 @@
 """Feed type 5: separate IPM tables for Z and for XY, each with its own codes (manual
-§4.1.2.6, 001 L11454-11557; options 49, 62, 63, 78, 144, 201, 202).
+§4.1.2.6, 001 L11454-11557; options 49, 62, 63, 78, 144, 201, 202, 215).
 
 This type is selected by setting option 78 to 5. The XY axes have their own set of feeds
 and so does the Z axis: the XY feed command goes in the XY motion block, the Z command in
@@ -16,7 +16,11 @@ per range,
     FCOM = row + (r - 1)(option 144 - 1)
 
 which is the manual's "row number + option 144 - 1" for range 2 and F11, F21, F31 for the
-first codes of Z ranges 1 to 3 (spec 05 §4.6). The programmed feed range applies to Z;
+first codes of Z ranges 1 to 3 (spec 05 §4.6). The option table gives type 5 an option of
+its own for that increment, option 215 (001 L26661-26669); when it is set it is the
+increment, and at its standard 0 option 144 is, as §4.1.2.6 says.
+
+The programmed feed range applies to Z;
 "when range 3 is programmed for Z, range 2 is used for XY", so each group takes the
 programmed range or its own highest. A range above both groups' counts takes the highest,
 with FEDRAT's comment (given at FEDRAT, not in every block).
@@ -127,8 +131,15 @@ def _command(machine: MachineDefinition, feed: float, context: FeedContext) -> F
     _, values = table_segment(machine, table_range, KIND)
     hit = next_lowest(values, feed)
     row = start + (group_range - 1) * len(values) + hit.index
-    gap = machine.number_option(144)
+    gap = range_increment(machine)
     return FeedCommand(row + (group_range - 1) * (gap - 1), hit.value, hit.comments)
+
+
+def range_increment(machine: MachineDefinition) -> float:
+    """The FCOM increment between ranges: option 215, type 5's own (001 L26661-26669), or
+    option 144 while 215 is at its standard 0 (001 L11471-11472, L11502-11505)."""
+    own = machine.number_option(215)
+    return own if own != 0 else machine.number_option(144)
 
 
 @dataclass(frozen=True)

@@ -24,6 +24,7 @@ from gecent.core.output.element import MOTION_CODES, POSITION_CODES, THREAD_CODE
 from gecent.core.output.tape import tape_line
 from gecent.plugins.printouts.layout import (
     FIRST_COLUMN,
+    NOT_ON_ABSOLUTE,
     Pages,
     Tally,
     centred_heading,
@@ -117,7 +118,8 @@ class Geout2Pages:
         lines = [_tagged("INC", data.incremental(block, sequence))]
         record = None if block.record is None else str(block.record)
         if code in MOTION_RECORDS:
-            lines.append(_tagged("ABS", data.absolute(block, record)))
+            if code not in NOT_ON_ABSOLUTE:  # (a turret correction has no ABS line)
+                lines.append(_tagged("ABS", data.absolute(block, record)))
             lines.append(_tagged("OPR", data.operator(block, tally.origin, sequence)))
         elif block.cells[20] is not ABSENT:  # a spindle speed: its RPM on the ABS line
             lines.append(_tagged("ABS", data.absolute(block, record)))

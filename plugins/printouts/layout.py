@@ -54,6 +54,7 @@ PRINTABLE = (
         Code.TURRET_CORRECTION,
         Code.NONMOTION,
         Code.AUX_ONLY,
+        Code.AUX_HEAD_IPM,  # a saddle move with its F in IPM (SELECT/HED,SADDLE)
         Code.DWELL,
         Code.G_ONLY,
         Code.END,
@@ -61,6 +62,11 @@ PRINTABLE = (
         Code.CYCLE,
     }
 )
+
+# "the corrective incremental moves are not summed nor printed on the Absolute Printout,
+# though they are for the Operator Printout" (CODE -3, 001 L9225-9233): a turret corrective
+# move has an Incremental and an Operator line, no Absolute one (its point is unchanged)
+NOT_ON_ABSOLUTE = frozenset({Code.TURRET_CORRECTION})
 
 
 @dataclass(frozen=True, slots=True)

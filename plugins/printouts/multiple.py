@@ -32,6 +32,7 @@ from gecent.core.output.block import TEXT_CODES, Block, Code
 from gecent.core.output.tape import tape_line
 from gecent.plugins.printouts.layout import (
     FIRST_COLUMN,
+    NOT_ON_ABSOLUTE,
     Pages,
     Tally,
     centred_heading,
@@ -239,6 +240,8 @@ class MultiplePages:
         lines = []
         for head, part in parts:
             data = self.heads[head]
+            if printed.kind == ABSOLUTE and part.code in NOT_ON_ABSOLUTE:
+                continue  # a turret corrective move (CODE -3, or its half of a +-14 block)
             if printed.kind == INCREMENTAL:
                 line = data.incremental(part)
             elif printed.kind == ABSOLUTE:
