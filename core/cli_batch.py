@@ -79,6 +79,11 @@ EXIT_INTERRUPTED = 130
 @click.option("--verify", is_flag=True, help="Check each G-code tape with rs274 (gecent verify).")
 @click.option("--force", is_flag=True, help="Post every job, changed or not.")
 @click.option(
+    "--dry-run",
+    is_flag=True,
+    help="Only list the jobs: which would post and which are unchanged (skipped).",
+)
+@click.option(
     "--timeout",
     type=click.FloatRange(min=0, min_open=True),
     metavar="SECONDS",
@@ -111,6 +116,7 @@ def batch_command(
     scheduler: str | None,
     verify: bool,
     force: bool,
+    dry_run: bool,
     timeout: float | None,
     state: str | None,
     json_path: str | None,
@@ -151,6 +157,7 @@ def batch_command(
         workers=count,
         scheduler=scheduler,
         force=force,
+        dry_run=dry_run,
         timeout=timeout,
         state=Path(state) if state else state_folder / STATE_NAME,
     )
@@ -159,6 +166,7 @@ def batch_command(
     if show:
         from tqdm import tqdm
 
+        tqdm.monitor_interval = 0  # no monitor thread in a process the pool forks
         bar = tqdm(total=len(jobs), unit=" jobs", file=sys.stderr, leave=False)
 
     def advance(outcome: Outcome) -> None:
@@ -189,7 +197,7 @@ def batch_command(
         width = shutil.get_terminal_size().columns if sys.stdout.isatty() else None
         echo(table(found, width))
     echo(total)
-    if any(not outcome.ok for outcome in outcomes):
+    if not dry_run and any(not outcome.ok for outcome in outcomes):
         sys.exit(EXIT_SOME_FAILED)
 
 

@@ -397,3 +397,15 @@ def test_a_stopped_batch_remembers_the_jobs_it_finished(tmp_path: Path) -> None:
     )
     assert result.exit_code == 0, result.output
     assert sorted(statuses(tmp_path / "s.json")) == ["posted"] * 4 + ["skipped"] * 2
+
+
+def test_a_dry_run_lists_what_would_post(tmp_path: Path) -> None:
+    parts = programs(tmp_path / "in", 2)
+    out, report = tmp_path / "out", tmp_path / "s.json"
+    common = [str(tmp_path / "in"), "--machine", "linuxcnc-mill", "--out", str(out)]
+    assert batch(*common).exit_code == 0
+    parts[0].write_text(PROGRAM.format(name=0, feed=333))
+    result = batch(*common, "--dry-run", "--json", str(report))
+    assert result.exit_code == 0, result.output
+    assert statuses(report) == ["to post", "skipped"]
+    assert "F333" not in (out / "part0.apt.tape").read_text()  # nothing posted

@@ -34,6 +34,7 @@ class Settings:
     workers: int = 1
     scheduler: str | None = None
     force: bool = False
+    dry_run: bool = False  # say which jobs would post, post none
     timeout: float | None = None
     state: Path | None = None
 
@@ -59,6 +60,8 @@ def run_batch(
                 progress(kept)
         else:
             todo.append(job)
+    if settings.dry_run:
+        return [outcomes.get(job.number) or Outcome(job.number, "to post", 0) for job in jobs]
     if settings.scheduler is not None:
         stream = _on_dask(todo, settings.scheduler, settings.timeout)
     else:

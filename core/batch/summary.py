@@ -62,7 +62,7 @@ def totals(found: list[dict[str, Any]], seconds: float, workers: str) -> str:
     count = Counter(row["status"] for row in found)
     parts = [
         f"{count[s]} {s}"
-        for s in ("posted", "skipped", "failed", "verify-failed", "crashed")
+        for s in ("posted", "skipped", "failed", "verify-failed", "crashed", "to post")
         if count[s]
     ]
     posted = count["posted"]
