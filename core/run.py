@@ -57,6 +57,12 @@ from gecent.core.motion.guard import (
     check_numbers,
 )
 from gecent.core.motion.linear import LinearMotion, path_length
+from gecent.core.motion.mixed import (
+    MIXED_CONTROL,
+    check_mixed_machine,
+    contouring_moved,
+    goes_positioning,
+)
 from gecent.core.motion.positioning import PositioningMotion
 from gecent.core.motion.rotary import RotaryElement
 from gecent.core.motion.thread import ThreadElement
@@ -400,8 +406,7 @@ class Run(CycleHoles, Elements):
 
     def motion_builtin(self, record: Motion) -> None:
         control = self.machine.number_option(1)
-        if control not in (0.0, 1.0, 2.0, -1.0):  # 3: the 7500's mixed control
-            raise NotYetSupported(f"motion with option 1 = {control:g}", record.where)
+        mixed = control == MIXED_CONTROL  # the 7500: each move one way (core/motion/mixed.py)
         positioning = control != 0
         multiaxis = self.machine.multiaxis
         if len(record.points[0]) == 6 and not multiaxis:
@@ -417,6 +422,8 @@ class Run(CycleHoles, Elements):
             self._multiaxis_special(record, positioning)
         if self.safety_motions:
             safety_motion(self, record)  # TSTFLG's SAFETO/SAFETX
+        if mixed:
+            positioning = self._mixed_way(record)
         if positioning:
             if self.state.threading.armed:
                 raise InputError(THREAD_POSITIONING, record.where)
@@ -448,6 +455,18 @@ class Run(CycleHoles, Elements):
         if self.circle.begin(record):
             return
         self.motion.record(record)
+
+    def _mixed_way(self, record: Motion) -> bool:
+        """Option 1 = 3: True when the record goes out by the positioning control, else by
+        the contouring one, whose moves make the positioning control's held words stale."""
+        check_mixed_machine(self.machine, record)
+        if goes_positioning(self.state, record, self.cycle is not None):
+            if self._circle is not None:
+                self._circle.centre = None  # a rapid move is never an arc: CIRFLG is spent
+            return True
+        if record.subtype is not MotionSubtype.FROM:
+            contouring_moved(self._positioning)
+        return False
 
     def _multiaxis_circle(self) -> None:
         """A multiaxis machine's circle goes out through its transform class (manual

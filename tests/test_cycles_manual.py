@@ -271,7 +271,7 @@ def test_inhibt_ends_a_control_cycle_with_g80(tmp_path: Path) -> None:
 
 def test_positioning_refuses_in_and_a_bore_form_it_lacks() -> None:
     mach24 = resolve_machine(get_plugins(), "mach24", None)
-    with pytest.raises(NotYetSupported, match="CYCLE/IN on a positioning machine"):
+    with pytest.raises(InputError, match="CYCLE/IN on a positioning machine"):
         post(["CYCLE/IN,CLEAR,0.1"], mach24)
-    with pytest.raises(NotYetSupported, match=r"CYCLE/BORE,DRAG .*TABLEG\(91\)"):
+    with pytest.raises(InputError, match=r"CYCLE/BORE,DRAG .*TABLEG\(91\)"):
         post(["CYCLE/BORE,DRAG,1,IPM,2,0.1"], mach24)

@@ -13,7 +13,7 @@ from pathlib import Path
 
 import pytest
 from gecent.core.dispatch.post import post as post_file
-from gecent.core.errors import InputError, NotYetSupported
+from gecent.core.errors import InputError
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.machine.loader import load_machine_text
 from gecent.core.machine.selection import resolve_machine
@@ -73,7 +73,7 @@ def test_in_on_a_positioning_machine_is_its_withdrawal_code_by_itself() -> None:
 
 def test_in_on_a_positioning_machine_without_its_code_is_named() -> None:
     mach24 = resolve_machine(get_plugins(), "mach24", None)
-    with pytest.raises(NotYetSupported, match=r"CYCLE/IN on a positioning machine .*TABLEG\(90\)"):
+    with pytest.raises(InputError, match=r"CYCLE/IN on a positioning machine .*TABLEG\(90\)"):
         post(["CYCLE/IN"], mach24)
 
 

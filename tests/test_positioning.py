@@ -12,7 +12,7 @@ cycles G81..G87 at TABLEG 82..88, R register at location 16 (format -22).
 from __future__ import annotations
 
 import pytest
-from gecent.core.errors import InputError, NotYetSupported
+from gecent.core.errors import InputError
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.machine.loader import load_machine_text
 from gecent.core.output.block import Code
@@ -145,7 +145,7 @@ def test_a_hole_above_the_tool_is_refused() -> None:
 
 def test_a_cycle_the_control_lacks_is_named() -> None:
     machine = mach24('[tableg]\n82 = "absent"\n')
-    with pytest.raises(NotYetSupported, match=r"TABLEG\(82\)"):
+    with pytest.raises(InputError, match=r"TABLEG\(82\)"):
         tape(["FROM/0,0,5", "CYCLE/DRILL,DEPTH,0.5,IPM,6,CLEAR,0.1", "GOTO/4,4,0"], machine)
 
 

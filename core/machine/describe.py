@@ -21,6 +21,8 @@ MACHINE_TYPES = {
     7: "positioning used as contouring",
     8: "positioning with contouring",
 }
+# option 1: 0 contouring, 3 the 7500's mixed control (core/motion/mixed.py), else positioning
+_CONTROLS = {0.0: "contouring", 3.0: "positioning and contouring (7500)"}
 
 
 def _codes(machine: MachineDefinition, table: str) -> list[dict[str, Any]]:
@@ -104,7 +106,7 @@ def describe_machine(machine: MachineDefinition, show_all: bool = False) -> str:
         f"machine {machine.label}: {machine.title or '(no title)'}",
         f"  {machine.description}" if machine.description else "",
         f"  type: {kind} (option 132), "
-        f"{'positioning' if machine.number_option(1) else 'contouring'} control (option 1), "
+        f"{_CONTROLS.get(machine.number_option(1), 'positioning')} control (option 1), "
         f"spindle type {int(machine.number_option(19))}, GEOUT{int(machine.number_option(164))}",
         f"  axes out: {describe_shuffle(decode_shuffle(machine.number_option(59), 'XYZ'))} "
         f"(option 59), {describe_shuffle(decode_shuffle(machine.number_option(60), 'IJK'))} "

@@ -245,7 +245,7 @@ def _feed_format(machine: MachineDefinition) -> Iterator[Problem]:
                 "option 10 = +1 cannot use the feedrate multiplier: set option 26 = 1",
             )
     ijk = [machine.registers.formats[i] for i in (8, 9, 10)]
-    if _number(machine, 1) == 0 and _number(machine, 26) == 0 and all(f is None for f in ijk):
+    if _number(machine, 1) in (0, 3) and _number(machine, 26) == 0 and all(f is None for f in ijk):
         yield "optab", 26, "option 26 = 0 (feedrate multiplier) needs I, J or K registers"
 
 
@@ -253,7 +253,7 @@ def _departure_capacity(machine: MachineDefinition) -> Iterator[Problem]:
     """The X, Y and Z formats must hold the largest departure, option 4 (DEPMAX), since
     moves are segmented to it (001 L4318-4333); under option 41 <= 0 the long departures
     of G10 blocks use format 23 or 24 and the others stay under 10 (§4.8, 001 L16144-16269)."""
-    if _number(machine, 1) != 0:
+    if _number(machine, 1) not in (0, 3):  # (3: the 7500's contouring departures too)
         return
     depmax = _number(machine, 4)
     variable = _number(machine, 41)
@@ -288,8 +288,52 @@ def _output_order(machine: MachineDefinition) -> Iterator[Problem]:
         yield "output_order", "iorder", "IORDER must give distinct output positions 1..30"
 
 
+def _positioning_control_kinds(machine: MachineDefinition) -> Iterator[Problem]:
+    """Option 1 = 3, the 7500's positioning and contouring control (001 L24352-24356,
+    core/motion/mixed.py), and option 213 = 1, a contouring machine with a positioning
+    control (L26636-26649): a positioning move then ends where a contour goes on from,
+    so its Z cannot be left to the operator (option 130 = 0, L25932-25941); the 7500
+    tells the two ways apart by the block's G code, so it needs the positioning G
+    TABLEG(1) and the linear one TABLEG(2) (docs/decisions.md, h6)."""
+    control, cuts = _number(machine, 1), machine.number_option(213)  # (a number: the schema)
+    if cuts not in (0, 1):
+        yield "optab", 213, f"contouring machine with a positioning control is 0 or 1; found {cuts}"
+    if cuts == 1 and control == 0:
+        yield (
+            "optab",
+            213,
+            "option 213 = 1 (a contouring machine with a positioning control) needs a "
+            "positioning control: option 1 = 1, -1, 2 or 3, not 0",
+        )
+    if (control == 3 or cuts == 1) and _number(machine, 130) == 0:
+        why = "option 1 = 3 (positioning with contouring)" if control == 3 else "option 213 = 1"
+        yield (
+            "optab",
+            130,
+            f"{why} cuts from where a positioning move ends: option 130 = 0 would leave "
+            "its Z to the operator; set +1 (Z block) or -1 (Z in the XY block)",
+        )
+    if control == 3:
+        for location, what in ((1, "positioning (cycle-off)"), (2, "linear interpolation")):
+            if machine.g_code(location) is None:
+                yield (
+                    "tableg",
+                    location,
+                    f"option 1 = 3 (positioning with contouring) needs the {what} G code: "
+                    "the block's G code tells the 7500 which way it reads the block",
+                )
+    if _number(machine, 132) == 8 and control != 3:
+        yield (
+            "optab",
+            132,
+            f"option 132 = 8 (positioning machine with the 7500's contouring option) needs "
+            f"option 1 = 3; found option 1 = {control:g}",
+        )
+
+
 RULES: tuple[Callable[[MachineDefinition], Iterator[Problem]], ...] = (
     _option_values,
+    _positioning_control_kinds,
     _spindle_table,
     _feed_table,
     _code_tables,

@@ -23,7 +23,10 @@ distance at rapid, both measured down from the tool's height (CURNTZ). CL files 
 hole's top and the cycle's DEPTH and CLEAR from it, so the block is made at the first hole
 and made again whenever a hole's top moves the plunge or the rapid distance. Without an R
 register (REGFOR(16) = 0) RAPIDP simulates it: the R distance is a rapid Z move in a block
-of its own, and the cycle block's Z is the rest of the plunge.
+of its own, and the cycle block's Z is the rest of the plunge. A cycle whose G code the
+control lacks is simulated the same way, whole: positioning moves across, down at rapid to
+R, at feed to the bottom and back (docs/decisions.md, "Options 80, 222 and positioning
+cycles").
 """
 
 from __future__ import annotations
@@ -33,7 +36,9 @@ from collections.abc import Callable
 from gecent.core.absent import ABSENT, Absent
 from gecent.core.cl.records import Motion, MotionSubtype
 from gecent.core.errors import Diagnostic, InputError, NotYetSupported, SourcePosition
-from gecent.core.motion.cycles import CYCLE_TYPES, Cycle
+from gecent.core.machine.definition import MachineDefinition
+from gecent.core.motion.cycles import CYCLE_TYPES, Cycle, cycle_legs
+from gecent.core.motion.guard import check_segments
 from gecent.core.motion.linear import godlta_point
 from gecent.core.motion.rounding import to_steps
 from gecent.core.output.block import Block, Code
@@ -46,6 +51,8 @@ MODE_G = {1: 52, 2: 53, 3: 54}  # FINE (backlash takeup), NOBACK (none), COARSE
 CORNER_MILLING_G = {1: 61, 2: 62}  # CORMIL, by the feed range IFDRNG
 TRAVERSE_G, TRAVERSE_IPR_G = 58, 63  # TRAV: traverse to feed without a stop, IPM or IPR
 MODE_NAMES = {1: "FINE", 2: "NOBACK", 3: "COARSE", 4: "CORMIL"}
+# the ways out of a hole that need M codes on the way (TAP, DRAG, MANUAL): not by moves here
+UNBUILT_WAYS = ("tap", "drag", "manual")
 
 
 def mode_g_location(state: PostState) -> int | None:
@@ -79,6 +86,29 @@ def set12(state: PostState, where: SourcePosition | None = None) -> float | None
     return code
 
 
+def refuse_cycle_by_moves(
+    machine: MachineDefinition, cycle: Cycle, where: SourcePosition | None
+) -> None:
+    """CYCLE on a positioning machine whose control lacks the cycle's G code (TABLEG
+    82-90): the hole is drilled by positioning moves, which needs Z on tape (option 130 =
+    +1 or -1). The forms that dwell or turn the spindle by M codes on the way are not
+    built by moves here."""
+    cell = CYCLE_TYPES[cycle.kind][1]
+    if machine.number_option(130) == 0:
+        raise InputError(
+            f"CYCLE/{cycle.kind} on a positioning machine without its G code TABLEG({cell}): "
+            f"machine {machine.label} puts no Z on tape (option 130 = 0), so the hole cannot "
+            "be drilled by moves either",
+            where,
+        )
+    if cycle.dwell or "DWELL" in cycle.kind or CYCLE_TYPES[cycle.kind][0] in UNBUILT_WAYS:
+        raise NotYetSupported(
+            f"CYCLE/{cycle.kind} by moves on a positioning machine without TABLEG({cell}) "
+            "(its dwell or its spindle M codes on the way)",
+            where,
+        )
+
+
 class PositioningMotion:
     """POSMOV for a single-head positioning machine."""
 
@@ -106,6 +136,9 @@ class PositioningMotion:
         # what the control holds: the last X and Y output, and the last cycle block
         self.held: list[int | None] = [None, None, None]
         self.cycle_block: tuple[float, int, int] | None = None
+        # a cycle the control lacks, drilled by moves: it and the level it started from
+        self.expanding: Cycle | None = None
+        self.first_z = 0.0
 
     # -- records ---------------------------------------------------------------------------
 
@@ -122,6 +155,8 @@ class PositioningMotion:
                 )
             if cycle is None:
                 self._move(record, point)
+            elif self.state.machine.g_code(CYCLE_TYPES[cycle.kind][1]) is None:
+                self._hole_by_moves(record, point, cycle)
             else:
                 self._hole(record, point, cycle)
 
@@ -281,9 +316,31 @@ class PositioningMotion:
     def _cycle_g(self, cycle: Cycle, record: Motion) -> float:
         cell = CYCLE_TYPES[cycle.kind][1]
         code = self.state.machine.g_code(cell)
-        if code is None:
-            raise NotYetSupported(
-                f"CYCLE/{cycle.kind} on a positioning machine without its G code TABLEG({cell})",
-                record.where,
-            )
+        assert code is not None  # (record() drills a cycle the control lacks by moves)
         return float(code)
+
+    def _hole_by_moves(self, record: Motion, point: tuple[float, ...], cycle: Cycle) -> None:
+        """A hole whose cycle the control lacks (no TABLEG 82-90 code): drilled by
+        positioning moves, as RAPIDP makes the rapid distance a control has no R register
+        for (001 L30164-30182, L35274-35313) and as a contouring machine's cycle is
+        expanded (core/motion/cycles.py): across at the tool's height, rapid down to R, feed
+        to the bottom (DEEP in pecks), out to the return level; each block takes the
+        positioning mode's G or TABLEG(1). CYCLE refuses this where option 130 = 0 (no Z
+        on tape) and for the forms that dwell or need M codes (core/statements/cycle.py)."""
+        position = self.state.position
+        tx, ty, tz = position.translation
+        shift = self._z_shift()
+        previous = position.previous_part
+        at = (previous[X] - tx, previous[Y] - ty, previous[Z] - tz - shift)
+        if cycle is not self.expanding:
+            self.expanding, self.first_z = cycle, at[Z]
+        self.cycle_block = None  # the cycle-off G of these moves cancels a control cycle
+        if cycle.kind == "DEEP" and cycle.step:
+            pecks = int(min(abs(cycle.depth / cycle.step), 1e18))
+            check_segments(pecks, self.state.max_segments, record.where, "deep-hole cycle")
+        hole = (point[X], point[Y], point[Z])
+        feed = self.state.feed
+        for leg in cycle_legs(cycle, at, hole, self.first_z):
+            feed.rapid_requested = leg.rapid
+            self._move(record, leg.point)
+        feed.rapid_requested = False

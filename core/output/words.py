@@ -41,6 +41,9 @@ class WordFormatter:
         self.machine = machine
         registers = machine.registers
         contouring = machine.number_option(1) == 0
+        # option 1 = 3 (the 7500, core/motion/mixed.py): departures drop X, Y, Z's trailing
+        # zeros as on a contouring control, absolute positions keep them (absolute_xyz)
+        mixed = machine.number_option(1) == 3
         order = [k for k in (machine.output_order or ()) if k not in NEVER_OUTPUT] or [
             k for k in range(1, 31) if k not in NEVER_OUTPUT
         ]
@@ -50,7 +53,7 @@ class WordFormatter:
             fmt = registers.formats[location]
             if fmt is None:
                 continue
-            drop = contouring or location not in (3, 4, 5)
+            drop = contouring or mixed or location not in (3, 4, 5)
             self.formatters.append(
                 RegisterFormatter(
                     location,
@@ -60,6 +63,13 @@ class WordFormatter:
                     decimal=self.decimal,
                 )
             )
+        self.absolute_xyz = {
+            f.location: RegisterFormatter(
+                f.location, f.letter, f.fmt, drop_trailing=False, decimal=self.decimal
+            )
+            for f in self.formatters
+            if mixed and f.location in (3, 4, 5)
+        }
         try:
             self.shuffle = cell_map(machine.number_option(59), "XYZ") + cell_map(
                 machine.number_option(60), "IJK"
@@ -167,6 +177,8 @@ class WordFormatter:
             location = formatter.location
             if long_departure and location in self.long_formatters:
                 formatter = self.long_formatters[location]
+            if absolute and location in self.absolute_xyz:
+                formatter = self.absolute_xyz[location]
             value = block.cells[location]
             if value is ABSENT:
                 continue

@@ -30,6 +30,7 @@ from gecent.core.motion.cycles import (
     parse_cycle,
     spindle_axis,
 )
+from gecent.core.motion.positioning import refuse_cycle_by_moves
 from gecent.core.output.block import Block, Code
 from gecent.core.statements.feed import program_feed
 
@@ -72,14 +73,12 @@ def cycle(run: Post, statement: Statement) -> None:
         run.control_cycle_element().off(statement.number)
     if not parsed.depth and parsed.kind != "IN":
         raise InputError(f"CYCLE/{parsed.kind} needs a depth", statement.where)
-    if positioning and machine.g_code(cell) is None:
-        raise NotYetSupported(
-            f"CYCLE/{parsed.kind} on a positioning machine without its G code TABLEG({cell})",
-            statement.where,
-        )
-    if positioning:
+    by_moves = positioning and machine.g_code(cell) is None
+    if by_moves:  # the control lacks the cycle: drilled by positioning moves
+        refuse_cycle_by_moves(machine, parsed, statement.where)
+    elif positioning:
         _unsent(run, parsed, statement, CONTROL_CYCLE_KEEPS)
-    if positioning and parsed.kind == "IN":
+    if positioning and parsed.kind == "IN" and not by_moves:
         _positioning_withdrawal(run, parsed, statement, float(machine.g_code(cell) or 0))
         return
     # a control that bores also makes BORE's forms: control_cycles names a missing cell

@@ -239,7 +239,9 @@ def _hold_feed(run: Post, feed: float, statement: Statement, *, report: bool = T
                 statement.where,
             )
         )
-    if run.machine.number_option(1) != 0:
+    if run.machine.number_option(1) not in (0.0, 3.0):
+        # (3, the 7500: the contouring moves take the feed as programmed; its positioning
+        # blocks get POSFED's feed at output, core/motion/mixed.py)
         used = _positioning_snap(run, used, statement)
     run.state.feed.ipm = used
     run.state.feed.programmed = feed

@@ -1,0 +1,79 @@
+"""The Mark Century 7500's mixed control, option 1 = 3: "machine has both positioning
+(absolute) and contouring (incremental) capability" (manual §5.6.5, option 1, 001
+L24352-24356; option 132 = 8, "positioning machine with contouring option (7500 series)",
+L25958). The manual names the control but never says which motion goes out which way;
+gecent's reading (docs/decisions.md, "h6"):
+
+* a motion at rapid traverse (RAPID, or a modal rapid in force) and every hole of a canned
+  cycle go out as the positioning control makes them (GEPOS's POSMOV and CYCLGP,
+  core/motion/positioning.py): absolute X, Y, Z by option 130, the cycle-off or cycle G
+  code, the positioning feed type of option 78 and option 45's rapid command;
+* a motion at feed goes out as the contouring control makes it (GETERP: GOLINE, GOCIRC,
+  threading, SFM, core/run.py's contouring path): incremental departures, the
+  interpolation G codes and the contouring feedrate command of option 10;
+* FROM and the present point are one: both paths keep the same step-grid point (the
+  position state), so each departure after a positioning move counts from the position
+  it reached, and each position after contouring is where the departures led;
+* the block's G code tells the control which way it reads the block (a positioning or
+  cycle G against an interpolation G), so a control switching ways is never left in the
+  other's G: the G word is output whenever it changes, as every G is.
+
+The positioning control's held words (option 40's repeated X and Y, the cycle block's Z
+and R) mean nothing once contouring has moved the slides, so they are forgotten then.
+"""
+
+from __future__ import annotations
+
+from gecent.core.cl.records import Motion, MotionSubtype
+from gecent.core.errors import NotYetSupported
+from gecent.core.feed.rapid import MODAL
+from gecent.core.machine.definition import MachineDefinition
+from gecent.core.motion.positioning import PositioningMotion
+from gecent.core.state import PostState
+
+MIXED_CONTROL = 3.0  # option 1
+
+
+def is_mixed(machine: MachineDefinition) -> bool:
+    return machine.number_option(1) == MIXED_CONTROL
+
+
+def check_mixed_machine(machine: MachineDefinition, record: Motion) -> None:
+    """What one position shared by both ways cannot hold yet: option 140's Z inversion and
+    option 86 < 0's tool-length Z move the positioning control's Z frame by a distance the
+    contouring departures would have to carry too; the manual does not say how the 7500
+    took it (001 L26049-26062, L25406-25434)."""
+    if machine.number_option(140) != 0:
+        raise NotYetSupported(
+            "option 140 (positioning Z inversion) on the 7500's mixed control (option 1 = 3)",
+            record.where,
+        )
+    if machine.number_option(86) < 0:
+        raise NotYetSupported(
+            "option 86 < 0 (positioning Z tool-length adjustment) on the 7500's mixed control "
+            "(option 1 = 3)",
+            record.where,
+        )
+
+
+def goes_positioning(state: PostState, record: Motion, cycle_in_force: bool) -> bool:
+    """True when the record goes out by the positioning control: a hole under a canned
+    cycle, or a move at rapid traverse (a thread is cut at feed by the contouring way,
+    which warns of the rapid). FROM is the contouring way's (no block moves)."""
+    if record.subtype is MotionSubtype.FROM:
+        return False
+    if cycle_in_force:
+        return True
+    if state.threading.armed:
+        return False
+    feed = state.feed
+    return feed.rapid_requested or feed.rapid_mode == MODAL
+
+
+def contouring_moved(positioning: PositioningMotion | None) -> None:
+    """Contouring moves the slides: the positioning control's held X, Y, Z and its cycle
+    block are no longer what the control has."""
+    if positioning is None:
+        return
+    positioning.held = [None, None, None]
+    positioning.cycle_block = None
