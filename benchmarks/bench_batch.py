@@ -21,7 +21,7 @@ import tempfile
 import time
 from pathlib import Path
 
-from gecent.core.batch.jobs import CL_PATTERNS, JobDefaults, jobs_from_sources
+from gecent.core.batch.jobs import JobDefaults, cl_files, jobs_from_sources
 from gecent.core.batch.runner import Settings, run_batch
 from gecent.core.batch.worker import run_job
 
@@ -29,7 +29,7 @@ CORPUS = Path(__file__).resolve().parents[2] / "shared" / "corpus"
 
 
 def library(folder: Path, copies: int) -> int:
-    files = sorted({f for pattern in CL_PATTERNS for f in CORPUS.rglob(pattern) if f.is_file()})
+    files = cl_files(CORPUS)
     for copy in range(copies):
         target = folder / f"copy{copy:04d}"
         for source in files:
@@ -65,7 +65,7 @@ def main() -> None:
 
         def pool(workers: int, scheduler: str | None = None) -> None:
             shutil.rmtree(folder / "out", ignore_errors=True)
-            outcomes = run_batch(jobs, Settings(workers=workers, scheduler=scheduler, force=True))
+            outcomes = run_batch(jobs, Settings(workers, scheduler, force=True)).outcomes
             assert len(outcomes) == len(jobs)
 
         run_job(jobs[0])  # the plugins and the machine loaded before any way is timed

@@ -4,18 +4,27 @@ or on a Dask cluster, with a summary (docs/batch.md)."""
 from __future__ import annotations
 
 import shutil
+import signal
 import sys
+import threading
 import time
 from pathlib import Path
 
 import click
-from gecent.core.batch.jobs import JobDefaults, jobs_from_manifest, jobs_from_sources, parse_optab
+from gecent.core.batch.jobs import (
+    JobDefaults,
+    check_settings,
+    checked,
+    jobs_from_manifest,
+    jobs_from_sources,
+    parse_optab,
+)
 from gecent.core.batch.runner import Settings, default_workers, run_batch
 from gecent.core.batch.state import STATE_NAME
 from gecent.core.batch.summary import as_csv, as_json, rows, table, totals
 from gecent.core.batch.worker import Outcome
 from gecent.core.cli_support import DIALECT_HELP, installed_plugins, reporting_errors
-from gecent.core.errors import InputError
+from gecent.core.errors import EXIT_BAD_INPUT, InputError
 from gecent.core.motion.guard import DEFAULT_MAX_SEGMENTS
 
 EXIT_SOME_FAILED = 1
@@ -129,9 +138,41 @@ def batch_command(
     unchanged since the last batch into the same outputs are skipped (--force posts them).
     Exit 0 when every job posted (or was skipped), 1 when any failed, 2 for bad batch
     input."""
+    _stop_on_sigterm()
+    try:
+        _batch(**locals())
+    except KeyboardInterrupt:
+        click.echo("gecent batch: interrupted", err=True)
+        sys.exit(EXIT_INTERRUPTED)
+
+
+def _batch(
+    sources: tuple[str, ...],
+    manifest: str | None,
+    machines: tuple[str, ...],
+    out: str,
+    suffix: str,
+    listing: bool | None,
+    punch: str | None,
+    dialect: str | None,
+    optab: str | None,
+    macros: tuple[str, ...],
+    max_segments: int,
+    workers: int | None,
+    scheduler: str | None,
+    verify: bool,
+    force: bool,
+    dry_run: bool,
+    timeout: float | None,
+    state: str | None,
+    json_path: str | None,
+    csv_path: str | None,
+    progress: bool | None,
+    quiet: bool,
+) -> None:
     if bool(sources) == bool(manifest):
         raise InputError("name CL files or folders, or give --manifest (not both)")
-    installed_plugins()  # (its warnings, once)
+    plugins = installed_plugins()  # (its warnings, once)
     defaults = JobDefaults(
         machines=tuple(machines) or (None,),
         out=Path(out),
@@ -152,6 +193,15 @@ def batch_command(
     else:
         jobs = jobs_from_sources(list(sources), defaults)
         state_folder = Path(out)
+    state_path = Path(state) if state else state_folder / STATE_NAME
+    protected = {str(state_path): "the batch's state file"}
+    if manifest is not None:
+        protected[manifest] = "the manifest"
+    for given, what in ((json_path, "the JSON summary"), (csv_path, "the CSV summary")):
+        if given is not None and given != "-":
+            protected[given] = what
+    checked(jobs, protected)
+    check_settings(jobs, plugins)
     count = workers or default_workers()
     settings = Settings(
         workers=count,
@@ -159,7 +209,7 @@ def batch_command(
         force=force,
         dry_run=dry_run,
         timeout=timeout,
-        state=Path(state) if state else state_folder / STATE_NAME,
+        state=state_path,
     )
     show = sys.stderr.isatty() if progress is None else progress
     bar = None
@@ -176,7 +226,7 @@ def batch_command(
 
     started = time.perf_counter()
     try:
-        outcomes = run_batch(jobs, settings, advance)
+        result = run_batch(jobs, settings, advance)
     except KeyboardInterrupt:
         click.echo("gecent batch: interrupted; the jobs finished are recorded", err=True)
         sys.exit(EXIT_INTERRUPTED)
@@ -184,26 +234,50 @@ def batch_command(
         if bar is not None:
             bar.close()
     seconds = time.perf_counter() - started
+    outcomes = result.outcomes
+    for problem in result.problems:
+        click.echo(f"gecent batch: warning: {problem}", err=True)
     found = rows(jobs, outcomes)
     where = f"Dask at {scheduler}" if scheduler else f"{count} worker{'s' * (count != 1)}"
     total = totals(found, seconds, where)
-    if json_path is not None:
-        _write(json_path, as_json(found, total))
-    if csv_path is not None:
-        _write(csv_path, as_csv(found))
+    unwritten = [
+        failure
+        for path, text in ((json_path, as_json(found, total)), (csv_path, as_csv(found)))
+        if path is not None and (failure := _write(path, text)) is not None
+    ]
     on_stdout = "-" in (json_path, csv_path)
     echo = click.echo if not on_stdout else lambda text: click.echo(text, err=True)
     if not quiet:
         width = shutil.get_terminal_size().columns if sys.stdout.isatty() else None
         echo(table(found, width))
     echo(total)
+    for failure in unwritten:
+        click.echo(f"gecent batch: error: {failure}", err=True)
+    if unwritten:
+        sys.exit(EXIT_BAD_INPUT)
     if not dry_run and any(not outcome.ok for outcome in outcomes):
         sys.exit(EXIT_SOME_FAILED)
 
 
-def _write(path: str, text: str) -> None:
+def _write(path: str, text: str) -> str | None:
+    """Write a summary file; what went wrong, or None."""
     if path == "-":
         click.echo(text, nl=False)
-        return
-    Path(path).parent.mkdir(parents=True, exist_ok=True)
-    Path(path).write_text(text, encoding="utf-8")
+        return None
+    try:
+        Path(path).parent.mkdir(parents=True, exist_ok=True)
+        Path(path).write_text(text, encoding="utf-8")
+    except OSError as exc:
+        return f"cannot write the summary {path}: {exc.strerror or exc}"
+    return None
+
+
+def _stop_on_sigterm() -> None:
+    """SIGTERM (a service stopping) stops the batch as Ctrl-C does: the queued jobs are
+    dropped, the workers stopped and what finished is recorded."""
+
+    def stop(signum: int, frame: object) -> None:
+        raise KeyboardInterrupt
+
+    if threading.current_thread() is threading.main_thread():
+        signal.signal(signal.SIGTERM, stop)

@@ -409,3 +409,212 @@ def test_a_dry_run_lists_what_would_post(tmp_path: Path) -> None:
     assert result.exit_code == 0, result.output
     assert statuses(report) == ["to post", "skipped"]
     assert "F333" not in (out / "part0.apt.tape").read_text()  # nothing posted
+
+
+def test_an_output_never_overwrites_an_input_or_the_manifest(tmp_path: Path) -> None:
+    programs(tmp_path, 2)
+    for tape, what in (
+        ("part0.apt", "the CL file of job 1"),
+        ("part1.apt", "the CL file of job 2"),
+        ("jobs.toml", "the manifest"),
+    ):
+        (tmp_path / "jobs.toml").write_text(
+            f'[[job]]\ninput = "part0.apt"\ntape = "{tape}"\n\n[[job]]\ninput = "part1.apt"\n'
+        )
+        result = batch("--manifest", str(tmp_path / "jobs.toml"), "--machine", "linuxcnc-mill")
+        assert result.exit_code == 2 and what in result.output, result.output
+    assert (tmp_path / "part0.apt").read_text().startswith("PARTNO")
+
+
+def test_outputs_inside_the_folder_are_not_posted_again(tmp_path: Path) -> None:
+    """The default output folder inside the folder posted: its tapes (x.ncl.8.tape) are not
+    CL files, and a Creo version is recognised only as .ncl.<number>."""
+    folder = tmp_path / "cam"
+    programs(folder, 1)
+    shutil.copy(folder / "part0.apt", folder / "drill.ncl.8")
+    (folder / "drill.ncl.lis").write_text("a listing, not a CL file\n")
+    report = tmp_path / "s.json"
+    for expected in (["posted", "posted"], ["skipped", "skipped"]):
+        result = batch(
+            str(folder),
+            "--machine",
+            "mach23",
+            "--out",
+            str(folder / "posted"),
+            "--json",
+            str(report),
+        )
+        assert result.exit_code == 0, result.output
+        assert statuses(report) == expected
+    assert [row["input"] for row in summary(report)] == ["drill.ncl.8", "part0.apt"]
+
+
+def test_a_state_or_summary_that_cannot_be_written_still_prints_the_summary(tmp_path: Path) -> None:
+    programs(tmp_path / "in", 1)
+    (tmp_path / "file").write_text("a file, not a folder")
+    result = batch(
+        str(tmp_path / "in"),
+        "--machine",
+        "linuxcnc-mill",
+        "--out",
+        str(tmp_path / "o"),
+        "--state",
+        str(tmp_path / "file" / "state.json"),
+    )
+    assert result.exit_code == 0, result.output
+    assert "warning: cannot write the batch state file" in result.output
+    assert "1 jobs: 1 posted" in result.output and (tmp_path / "o" / "part0.apt.tape").exists()
+    result = batch(
+        str(tmp_path / "in"),
+        "--machine",
+        "linuxcnc-mill",
+        "--out",
+        str(tmp_path / "o"),
+        "--json",
+        str(tmp_path / "file" / "s.json"),
+    )
+    assert result.exit_code == 2 and "cannot write the summary" in result.output
+    assert "1 jobs: 1 posted" in result.output  # (the state of the first run was not kept)
+
+
+def test_a_damaged_state_file_is_refused_unless_forced(tmp_path: Path) -> None:
+    programs(tmp_path / "in", 1)
+    out = tmp_path / "o"
+    out.mkdir()
+    for text in ("{not json", '{"format": 1, "jobs": [1]}', '{"x": 1}'):
+        (out / ".gecent-batch.json").write_text(text)
+        common = [str(tmp_path / "in"), "--machine", "linuxcnc-mill", "--out", str(out)]
+        result = batch(*common)
+        assert result.exit_code == 2 and ".gecent-batch.json" in result.output, result.output
+        assert batch(*common, "--force").exit_code == 0
+    entry = json.loads((out / ".gecent-batch.json").read_text())
+    entry["jobs"][next(iter(entry["jobs"]))]["summary"] = "damaged"
+    (out / ".gecent-batch.json").write_text(json.dumps(entry))
+    result = batch(
+        str(tmp_path / "in"),
+        "--machine",
+        "linuxcnc-mill",
+        "--out",
+        str(out),
+        "--json",
+        str(tmp_path / "s.json"),
+    )
+    assert result.exit_code == 0 and statuses(tmp_path / "s.json") == ["posted"]
+
+
+def test_verify_on_a_machine_rs274_cannot_read_is_not_asked_again(tmp_path: Path) -> None:
+    report = tmp_path / "s.json"
+    for expected in ("posted", "skipped"):
+        result = batch(str(HELLO), "--verify", "--out", str(tmp_path / "o"), "--json", str(report))
+        assert result.exit_code == 0, result.output
+        assert statuses(report) == [expected]
+        assert str(summary(report)[0]["verify"]).startswith("n/a")
+
+
+@pytest.mark.parametrize(
+    ("manifest", "expected"),
+    [
+        ('[[job]]\ninput = "part0.apt"\nmacros = 5\n', "jobs.toml:4: error: macros = 5"),
+        ('[[job]]\ninput = "part0.apt"\ntape = "."\n', "is not a file name"),
+        ('[[job]]\ninput = "part0.apt"\nmachine = "linux-mill"\n', "'linux-mill' is not installed"),
+        ('[[job]]\ninput = "part0.apt"\ndialect = "nxx"\n', "no dialect 'nxx'"),
+        ('[[job]]\ninput = "part0.apt"\nout = "x"\n', "unknown manifest key 'out'"),
+        ('[[job]]\ninput = "part0.apt"\nmax_segments = -5\n', "max_segments is a whole number"),
+        ('job = [1, 2]\n[defaults]\nmachine = "mach23"\n', "[[job]] an array of tables"),
+        ('[[job]]\ninput = "part0.apt"\ndialect = 5\n', "dialect = 5: expected text"),
+    ],
+)
+def test_bad_manifest_values_are_bad_input(tmp_path: Path, manifest: str, expected: str) -> None:
+    programs(tmp_path, 1)
+    (tmp_path / "jobs.toml").write_text(
+        '[defaults]\nmachine = "linuxcnc-mill"\n\n' + manifest
+        if "machine" not in manifest
+        else manifest
+    )
+    result = batch("--manifest", str(tmp_path / "jobs.toml"), "--out", str(tmp_path / "o"))
+    assert result.exit_code == 2, result.output
+    assert expected in result.output, result.output
+    assert "internal error" not in result.output
+
+
+def test_csv_cells_as_a_spreadsheet_writes_them(tmp_path: Path) -> None:
+    """Excel's byte-order mark, false/true for the listing, a file that is not UTF-8."""
+    programs(tmp_path, 2)
+    (tmp_path / "jobs.csv").write_text(
+        "\ufeffinput,machine,listing\npart0.apt,mach23,false\npart1.apt,mach23,true\n",
+        encoding="utf-8",
+    )
+    result = batch("--manifest", str(tmp_path / "jobs.csv"), "--out", str(tmp_path / "o"))
+    assert result.exit_code == 0, result.output
+    assert not (tmp_path / "false").exists() and not (tmp_path / "true").exists()
+    assert not (tmp_path / "o" / "part0.apt.lis").exists()
+    assert (tmp_path / "o" / "part1.apt.lis").exists()
+    (tmp_path / "latin.csv").write_bytes(b"input,machine\npart0.apt,m\xe4ch23\n")
+    result = batch("--manifest", str(tmp_path / "latin.csv"))
+    assert result.exit_code == 2 and "not UTF-8" in result.output
+
+
+def test_a_broken_macro_file_is_named_as_the_job_names_it(tmp_path: Path) -> None:
+    programs(tmp_path, 1)
+    (tmp_path / "shop.py").write_text("x = (\n")
+    (tmp_path / "jobs.toml").write_text(
+        '[[job]]\ninput = "part0.apt"\nmachine = "linuxcnc-mill"\nmacros = ["shop.py"]\n'
+    )
+    result = batch(
+        "--manifest",
+        str(tmp_path / "jobs.toml"),
+        "--out",
+        str(tmp_path / "o"),
+        "--json",
+        str(tmp_path / "s.json"),
+    )
+    assert result.exit_code == 1
+    error = str(summary(tmp_path / "s.json")[0]["error"])
+    assert error.startswith(str(tmp_path / "shop.py")) and "gecent-job-" not in error
+
+
+def test_sigterm_stops_the_batch_and_its_workers(tmp_path: Path) -> None:
+    import os
+    import signal
+    import subprocess
+    import sys
+    import time
+
+    programs(tmp_path, 3)
+    (tmp_path / "hangs.py").write_text("while True:\n    pass\n")
+    (tmp_path / "jobs.toml").write_text(
+        '[defaults]\nmachine = "linuxcnc-mill"\nmacros = ["hangs.py"]\n\n'
+        + "".join(f'[[job]]\ninput = "part{n}.apt"\n\n' for n in range(3))
+    )
+    gecent = Path(sys.executable).parent / "gecent"
+    command = [
+        str(gecent),
+        "batch",
+        "--manifest",
+        str(tmp_path / "jobs.toml"),
+        "-j",
+        "2",
+        "--no-progress",
+        "--out",
+        str(tmp_path / "o"),
+    ]
+    process = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    workers: list[int] = []
+    for _ in range(100):  # the two workers busy with their hanging jobs
+        time.sleep(0.1)
+        children = Path(f"/proc/{process.pid}/task/{process.pid}/children")
+        workers = [int(p) for p in children.read_text().split()] if children.exists() else []
+        if len(workers) >= 2:
+            break
+    assert len(workers) >= 2
+    time.sleep(0.5)
+    process.send_signal(signal.SIGTERM)
+    _, err = process.communicate(timeout=30)
+    assert process.returncode == 130, err
+    time.sleep(0.5)
+    for pid in workers:
+        assert (
+            not Path(f"/proc/{pid}").exists()
+            or "Z" in Path(f"/proc/{pid}/stat").read_text().split()[2]
+        ), pid
+    del os

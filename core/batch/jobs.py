@@ -8,6 +8,8 @@ packs installed (docs/batch.md)."""
 from __future__ import annotations
 
 import csv
+import io
+import re
 import tomllib
 from dataclasses import dataclass, field, replace
 from pathlib import Path
@@ -18,7 +20,8 @@ from gecent.core.motion.guard import DEFAULT_MAX_SEGMENTS
 
 # what a folder's CL files are called: APT source, CL print files, binary CL tapes, Creo's
 # numbered .ncl versions, NX's .cls and NCL's .clf
-CL_PATTERNS = ("*.apt", "*.aptsource", "*.cl", "*.cls", "*.cl3", "*.clf", "*.ncl", "*.ncl.[0-9]*")
+CL_SUFFIXES = (".apt", ".aptsource", ".cl", ".cls", ".cl3", ".clf", ".ncl")
+CREO_VERSION = re.compile(r"\.ncl\.\d+$")  # part.ncl.3: Creo's third version
 PUNCH_CODES = ("eia", "ascii")
 JOB_KEYS = frozenset(
     {
@@ -53,10 +56,11 @@ class Job:
     punch: tuple[str, str] | None = None
     dialect: str | None = None
     optab: tuple[tuple[int, float], ...] = ()
-    macros: tuple[tuple[str, str], ...] = ()  # (file name, Python text)
+    macros: tuple[tuple[str, str], ...] = ()  # (the file as named, its Python text)
     max_segments: int = DEFAULT_MAX_SEGMENTS
     verify: bool = False
     input_bytes: bytes | None = field(default=None, repr=False)  # shipped to a cluster
+    where: SourcePosition | None = None  # the manifest line that asked for it
 
     def shipped(self) -> Job:
         """The job with its CL file's bytes, for a worker that may not see this file
@@ -81,14 +85,14 @@ class JobDefaults:
 
 
 def jobs_from_sources(sources: list[str], defaults: JobDefaults) -> list[Job]:
-    """Jobs for CL files and folders (every CL file under a folder, CL_PATTERNS), each on
+    """Jobs for CL files and folders (every CL file under a folder: :func:`cl_files`), each on
     every machine asked for; outputs mirror the inputs' places under ``defaults.out``, in a
     folder per machine when there are several."""
     found: list[tuple[Path, Path]] = []  # (file, its path under the output folder)
     for source in sources:
         path = Path(source)
         if path.is_dir():
-            files = sorted({f for p in CL_PATTERNS for f in path.rglob(p) if f.is_file()})
+            files = cl_files(path, skip=defaults.out)
             if not files:
                 raise InputError(f"no CL files in folder {source} (looked for {_patterns()})")
             found.extend((f, f.relative_to(path)) for f in files)
@@ -106,7 +110,23 @@ def jobs_from_sources(sources: list[str], defaults: JobDefaults) -> list[Job]:
         for path, relative in found:
             tape = folder / relative.parent / (_stem(relative) + defaults.suffix)
             jobs.append(_job(len(jobs) + 1, path, str(relative), tape, machine, defaults, {}))
-    return checked(jobs)
+    return jobs
+
+
+def cl_files(folder: Path, skip: Path | None = None) -> list[Path]:
+    """The CL files under ``folder`` by their names (CL_SUFFIXES, Creo's versions), leaving
+    out the folder ``skip`` (the outputs, when they are written inside the inputs)."""
+    skipped = skip.resolve() if skip is not None else None
+    found = []
+    for path in sorted(folder.rglob("*")):
+        name = path.name.lower()
+        if not (name.endswith(CL_SUFFIXES) or CREO_VERSION.search(name)):
+            continue
+        if skipped is not None and skipped in path.resolve().parents:
+            continue
+        if path.is_file():
+            found.append(path)
+    return found
 
 
 def jobs_from_manifest(manifest: str, defaults: JobDefaults) -> list[Job]:
@@ -128,7 +148,7 @@ def jobs_from_manifest(manifest: str, defaults: JobDefaults) -> list[Job]:
         raise InputError("the manifest names no jobs", SourcePosition(manifest))
     jobs: list[Job] = []
     for row, where in rows:
-        unknown = sorted(set(row) - JOB_KEYS - {"out"})
+        unknown = sorted(set(row) - JOB_KEYS)
         if unknown:
             raise InputError(
                 f"unknown manifest key {unknown[0]!r} (known: {', '.join(sorted(JOB_KEYS))})",
@@ -136,6 +156,8 @@ def jobs_from_manifest(manifest: str, defaults: JobDefaults) -> list[Job]:
             )
         if not row.get("input"):
             raise InputError("a job names no input", where)
+        for key, value in row.items():
+            _check_type(key, value, where)
         source = base / str(row["input"])
         if not source.is_file():
             raise InputError(f"input {row['input']}: no such file", where)
@@ -152,15 +174,31 @@ def jobs_from_manifest(manifest: str, defaults: JobDefaults) -> list[Job]:
                 len(jobs) + 1, source, str(row["input"]), tape, machine, defaults, row, where, base
             )
         )
-    return checked(jobs)
+    return jobs
 
 
-def checked(jobs: list[Job]) -> list[Job]:
-    """Two jobs writing one file would overwrite each other's output: bad input."""
+def checked(jobs: list[Job], protected: dict[str, str] | None = None) -> list[Job]:
+    """Two jobs writing one file would overwrite each other's output, and an output must
+    never be a CL file of the batch, its manifest or its state file (``protected``: path,
+    what it is): bad input, before anything is posted."""
+    guarded = {str(Path(path).resolve()): what for path, what in (protected or {}).items()}
+    for job in jobs:
+        guarded.setdefault(str(Path(job.input).resolve()), f"the CL file of job {job.number}")
     owners: dict[str, Job] = {}
     for job in jobs:
         for output in outputs_of(job):
+            if not Path(output).name or Path(output).is_dir():
+                raise InputError(
+                    f"job {job.number} ({job.name}): {output!r} is not a file name",
+                    job.where,
+                )
             key = str(Path(output).resolve())
+            if key in guarded:
+                raise InputError(
+                    f"job {job.number} ({job.name}) would write {output}, which is "
+                    f"{guarded[key]}: give the job another output",
+                    job.where,
+                )
             other = owners.get(key)
             if other is not None:
                 raise InputError(
@@ -169,6 +207,59 @@ def checked(jobs: list[Job]) -> list[Job]:
                 )
             owners[key] = job
     return jobs
+
+
+_TYPES: dict[str, tuple[type, ...]] = {
+    "input": (str,),
+    "machine": (str, int),
+    "tape": (str,),
+    "listing": (str, bool),
+    "punch": (str, bool),
+    "punch_file": (str,),
+    "dialect": (str,),
+    "optab": (str, dict),
+    "macros": (str, list),
+    "max_segments": (int, str),
+    "verify": (bool, str, int),
+}
+
+
+def check_settings(jobs: list[Job], plugins: Any) -> None:
+    """What would fail every job it touches is bad batch input, found before anything runs:
+    a machine that is not installed, a dialect that is not."""
+    dialects = {info.obj.name for info in plugins.family("dialects").values()}
+    for job in jobs:
+        known = job.machine is None or job.machine_text is not None
+        if not known and plugins.machine(job.machine) is None:
+            raise InputError(
+                f"job {job.number} ({job.name}): machine {job.machine!r} is not installed "
+                "(see 'gecent machines')",
+                job.where,
+            )
+        if job.dialect is not None and job.dialect.lower() not in {*dialects, "none", "apt"}:
+            raise InputError(
+                f"job {job.number} ({job.name}): no dialect {job.dialect!r} (dialects: "
+                f"{', '.join(sorted(dialects)) or 'none installed'}, or none)",
+                job.where,
+            )
+
+
+def _check_type(key: str, value: Any, where: SourcePosition | None) -> None:
+    kinds = _TYPES.get(key)
+    if kinds is not None and not isinstance(value, kinds):
+        expected = " or ".join(
+            {
+                str: "text",
+                int: "a whole number",
+                bool: "true/false",
+                dict: "a table",
+                list: "a list",
+            }[kind]
+            for kind in kinds
+        )
+        raise InputError(f"{key} = {value!r}: expected {expected}", where)
+    if key == "macros" and isinstance(value, list) and not all(isinstance(v, str) for v in value):
+        raise InputError("macros is a list of file names", where)
 
 
 def outputs_of(job: Job) -> list[str]:
@@ -205,17 +296,18 @@ def _job(
         machine_file = Path(machine)
         if not machine_file.is_file():
             raise InputError(f"machine file {machine}: no such file", where)
-        machine_text = machine_file.read_text(encoding="utf-8")
+        machine_text = _read_text(machine_file, "machine file", where)
     listing: str | None = "auto" if defaults.listing is None else None
     if defaults.listing:
         listing = str(tape.with_suffix(".lis"))
     if "listing" in row:
         value = row["listing"]
+        word = str(value).strip().lower()
         listing = (
             None
-            if value in (False, "", "no", "none")
+            if value is False or word in ("", "no", "none", "false", "0")
             else "auto"
-            if value in (True, "auto", "yes")
+            if value is True or word in ("auto", "yes", "true", "1")
             else local(value)
         )
     punch_code = row.get("punch", defaults.punch)
@@ -232,11 +324,13 @@ def _job(
     for macro in macro_files:
         if not Path(macro).is_file():
             raise InputError(f"macro file {macro}: no such file", where)
-        macros.append((Path(macro).name, Path(macro).read_text(encoding="utf-8")))
+        macros.append((macro, _read_text(Path(macro), "macro file", where)))
     try:
-        max_segments = int(row.get("max_segments", defaults.max_segments))
+        max_segments = int(str(row.get("max_segments", defaults.max_segments)))
     except (TypeError, ValueError):
-        raise InputError("max_segments is a whole number", where) from None
+        max_segments = -1
+    if max_segments < 0:
+        raise InputError("max_segments is a whole number, 0 or more", where)
     return Job(
         number=number,
         input=str(source),
@@ -246,11 +340,12 @@ def _job(
         machine_text=machine_text,
         listing=listing,
         punch=punch,
-        dialect=row.get("dialect", defaults.dialect) or None,
+        dialect=str(row.get("dialect", defaults.dialect) or "") or None,
         optab=optab,
         macros=tuple(macros),
         max_segments=max_segments,
         verify=_flag(row.get("verify", defaults.verify), where),
+        where=where,
     )
 
 
@@ -305,8 +400,8 @@ def _list(value: Any) -> list[str]:
 
 def _toml_rows(path: Path) -> tuple[list[tuple[dict[str, Any], SourcePosition]], dict[str, Any]]:
     try:
-        data = tomllib.loads(path.read_text(encoding="utf-8"))
-    except (tomllib.TOMLDecodeError, UnicodeDecodeError) as exc:
+        data = tomllib.loads(_read_text(path, "manifest", SourcePosition(str(path))))
+    except tomllib.TOMLDecodeError as exc:
         raise InputError(
             f"the manifest is not valid TOML: {exc}", SourcePosition(str(path))
         ) from None
@@ -318,7 +413,11 @@ def _toml_rows(path: Path) -> tuple[list[tuple[dict[str, Any], SourcePosition]],
         )
     defaults = data.get("defaults", {})
     jobs = data.get("job", [])
-    if not isinstance(defaults, dict) or not isinstance(jobs, list):
+    if (
+        not isinstance(defaults, dict)
+        or not isinstance(jobs, list)
+        or not all(isinstance(job, dict) for job in jobs)
+    ):
         raise InputError(
             "[defaults] is a table and [[job]] an array of tables", SourcePosition(str(path))
         )
@@ -338,8 +437,18 @@ def _job_lines(path: Path) -> list[int]:
     ]
 
 
+def _read_text(path: Path, what: str, where: SourcePosition | None) -> str:
+    try:
+        return path.read_text(encoding="utf-8")
+    except UnicodeDecodeError as exc:
+        raise InputError(f"{what} {path}: byte {exc.start} is not UTF-8 text", where) from None
+    except OSError as exc:
+        raise InputError(f"{what} {path}: {exc.strerror}", where) from None
+
+
 def _csv_rows(path: Path) -> list[tuple[dict[str, Any], SourcePosition]]:
-    with open(path, newline="", encoding="utf-8") as handle:
+    text = _read_text(path, "manifest", SourcePosition(str(path)))
+    with io.StringIO(text.removeprefix("\ufeff"), newline="") as handle:  # (Excel's BOM)
         reader = csv.DictReader(handle)
         if reader.fieldnames is None or "input" not in reader.fieldnames:
             raise InputError(
@@ -367,4 +476,4 @@ def _folder_name(machine: str | None) -> str:
 
 
 def _patterns() -> str:
-    return ", ".join(CL_PATTERNS)
+    return ", ".join(f"*{suffix}" for suffix in CL_SUFFIXES) + ", *.ncl.<n>"

@@ -5,8 +5,10 @@ others."""
 
 from __future__ import annotations
 
+import contextlib
 import hashlib
 import os
+import signal
 from collections.abc import Callable, Iterable, Iterator
 from concurrent.futures import FIRST_COMPLETED, Future, ProcessPoolExecutor, wait
 from concurrent.futures.process import BrokenProcessPool
@@ -39,16 +41,23 @@ class Settings:
     state: Path | None = None
 
 
+@dataclass
+class BatchResult:
+    outcomes: list[Outcome]
+    problems: list[str]  # what went wrong beside the jobs (the state file not written)
+
+
 def run_batch(
     jobs: list[Job], settings: Settings, progress: Callable[[Outcome], None] | None = None
-) -> list[Outcome]:
+) -> BatchResult:
     """Post ``jobs``; the outcomes in the jobs' order."""
     plugins = installed()
     fingerprint = plugins_fingerprint(plugins)
-    state = State.load(settings.state) if settings.state is not None else None
+    state = State.load(settings.state, settings.force) if settings.state is not None else None
     keys = {job.number: job_key(job, fingerprint) for job in jobs}
     by_number = {job.number: job for job in jobs}
     outcomes: dict[int, Outcome] = {}
+    problems: list[str] = []
     todo: list[Job] = []
     for job in jobs:
         kept = None
@@ -61,7 +70,8 @@ def run_batch(
         else:
             todo.append(job)
     if settings.dry_run:
-        return [outcomes.get(job.number) or Outcome(job.number, "to post", 0) for job in jobs]
+        listed = [outcomes.get(job.number) or Outcome(job.number, "to post", 0) for job in jobs]
+        return BatchResult(listed, problems)
     if settings.scheduler is not None:
         stream = _on_dask(todo, settings.scheduler, settings.timeout)
     else:
@@ -80,15 +90,20 @@ def run_batch(
             if progress is not None:
                 progress(outcome)
     finally:
-        if state is not None:
-            state.save()  # what finished is remembered even when the batch is stopped
-    return [outcomes[job.number] for job in jobs if job.number in outcomes]
+        if state is not None:  # what finished is remembered even when the batch is stopped
+            problem = state.save()
+            if problem is not None:
+                problems.append(problem)
+    ordered = [outcomes[job.number] for job in jobs if job.number in outcomes]
+    return BatchResult(ordered, problems)
 
 
 def _write_outputs(job: Job, outcome: Outcome) -> dict[str, str]:
-    """Each output put in place at once; the hashes of what was written. A file that
-    cannot be written fails the job (its other outputs are removed again)."""
+    """Every output written to a temporary file first, then all renamed into place, so a
+    job's outputs change together or not at all; the hashes of what was written. A file
+    that cannot be written fails the job and leaves its earlier outputs as they were."""
     paths = output_paths(job, outcome)
+    staged: list[tuple[Path, Path]] = []
     written: dict[str, str] = {}
     try:
         for kind, path in paths.items():
@@ -96,50 +111,82 @@ def _write_outputs(job: Job, outcome: Outcome) -> dict[str, str]:
             target = Path(path)
             target.parent.mkdir(parents=True, exist_ok=True)
             temporary = target.with_name(f".{target.name}.{os.getpid()}.tmp")
+            staged.append((temporary, target))
             temporary.write_bytes(data)
-            os.replace(temporary, target)
             written[path] = hashlib.sha256(data).hexdigest()
+        for temporary, target in staged:
+            os.replace(temporary, target)
     except OSError as exc:
-        for path in written:
-            Path(path).unlink(missing_ok=True)
+        for temporary, _ in staged:
+            with contextlib.suppress(OSError):
+                temporary.unlink(missing_ok=True)
         outcome.status, outcome.exit_status = "failed", 2
-        outcome.error = f"cannot write {exc.filename}: {exc.strerror}"
+        failed = next((t for tmp, t in staged if str(tmp) == exc.filename), exc.filename)
+        outcome.error = f"cannot write {failed}: {exc.strerror or exc}"
         return {}
     return written
 
 
+def _warm() -> None:
+    """A worker loads the plugins before its first job (not inside its --timeout). It
+    leaves Ctrl-C to the batch, which stops it, and dies at SIGTERM (a forked worker would
+    otherwise keep the batch's own handlers)."""
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    signal.signal(signal.SIGTERM, signal.SIG_DFL)
+    import gecent.core.dispatch.post  # noqa: F401
+
+    installed()
+
+
 def _on_local_processes(jobs: list[Job], workers: int, timeout: float | None) -> Iterator[Outcome]:
     """The jobs on ``workers`` local processes. A worker that dies breaks the pool: the
-    jobs not yet done then run one at a time, each in a process of its own, so the one that
-    kills its process is named and the others are posted."""
+    jobs that were running then each run again in a process of their own (so the one that
+    kills its process is named ``crashed``), and the others go to a new pool."""
     if not jobs:
         return
     context = get_context("fork" if "fork" in get_all_start_methods() else "spawn")
     task = partial(run_job, timeout=timeout)
-    unfinished: list[Job] = []
-    pool = ProcessPoolExecutor(max_workers=max(1, workers), mp_context=context)
+    broken: list[Job] = []
+    running: set[Future[Outcome]] = set()
+    pool = ProcessPoolExecutor(max_workers=max(1, workers), mp_context=context, initializer=_warm)
     try:
         futures: dict[Future[Outcome], Job] = {pool.submit(task, job): job for job in jobs}
         pending = set(futures)
         while pending:
+            running = {future for future in pending if future.running()}
             done, pending = wait(pending, return_when=FIRST_COMPLETED)
             for future in done:
                 try:
                     yield future.result()
                 except BrokenProcessPool:
-                    unfinished.append(futures[future])
+                    broken.append(futures[future])
     except BaseException:
-        # stopped (Ctrl-C, SIGTERM, the caller gone): the queued jobs are dropped at once,
-        # not run to the end
-        pool.shutdown(wait=False, cancel_futures=True)
+        # stopped (Ctrl-C, SIGTERM, the caller gone): the queued jobs are dropped and the
+        # workers stopped at once, not left to run on
+        _stop(pool)
         raise
     pool.shutdown()
-    for job in sorted(unfinished, key=lambda job: job.number):
+    if not broken:
+        return
+    was_running = {futures[future].number for future in running}
+    suspects = [job for job in broken if job.number in was_running] or broken
+    for job in suspects:
         yield _isolated(job, timeout, context)
+    rest = [job for job in broken if job not in suspects]
+    yield from _on_local_processes(rest, workers, timeout)
+
+
+def _stop(pool: ProcessPoolExecutor) -> None:
+    # (the executor has no public way to stop a job that is running: its processes)
+    processes = list((getattr(pool, "_processes", None) or {}).values())
+    pool.shutdown(wait=False, cancel_futures=True)
+    for process in processes:
+        with contextlib.suppress(Exception):
+            process.terminate()
 
 
 def _isolated(job: Job, timeout: float | None, context: BaseContext) -> Outcome:
-    with ProcessPoolExecutor(max_workers=1, mp_context=context) as pool:
+    with ProcessPoolExecutor(max_workers=1, mp_context=context, initializer=_warm) as pool:
         try:
             outcome: Outcome = pool.submit(run_job, job, timeout).result()
             return outcome
@@ -161,7 +208,7 @@ def _on_dask(jobs: list[Job], scheduler: str, timeout: float | None) -> Iterator
         return
     try:
         client = distributed.Client(scheduler, timeout="30s")
-    except (OSError, TimeoutError) as exc:
+    except (OSError, TimeoutError, ValueError) as exc:
         raise InputError(f"cannot reach the Dask scheduler at {scheduler}: {exc}") from None
     with client:
         _check_workers(client)

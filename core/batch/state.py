@@ -5,6 +5,7 @@ outputs; ``--force`` posts everything)."""
 
 from __future__ import annotations
 
+import contextlib
 import hashlib
 import json
 import os
@@ -39,13 +40,18 @@ def file_hash(path: str | Path) -> str:
     return digest.hexdigest()
 
 
-def job_key(job: Job, fingerprint: str) -> str:
+def job_key(job: Job, fingerprint: str) -> str | None:
     """What the job's outputs depend on, besides the machine the CL file's MACHIN chooses
-    (checked apart: :meth:`State.unchanged`)."""
+    (checked apart: :meth:`State.unchanged`); None when the CL file cannot be read (the job
+    then posts, and fails naming why)."""
+    try:
+        input_hash = file_hash(job.input)
+    except OSError:
+        return None
     settings = {
         "gecent": __version__,
         "plugins": fingerprint,
-        "input": file_hash(job.input),
+        "input": input_hash,
         "machine": job.machine,
         "machine_text": text_hash(job.machine_text) if job.machine_text is not None else None,
         "listing": job.listing,
@@ -73,24 +79,49 @@ class State:
     jobs: dict[str, dict[str, Any]] = field(default_factory=dict)
 
     @classmethod
-    def load(cls, path: Path) -> State:
+    def load(cls, path: Path, force: bool = False) -> State:
+        """The state file's record; with ``force`` a record that cannot be read is started
+        afresh (everything posts anyway)."""
+        state = cls(path)
         if not path.exists():
-            return cls(path)
+            return state
         try:
             data = json.loads(path.read_text(encoding="utf-8"))
         except (OSError, ValueError) as exc:
+            if force:
+                return state
             raise InputError(
                 f"the batch state file cannot be read ({exc}); remove it or give --force",
                 SourcePosition(str(path)),
             ) from None
-        if not isinstance(data, dict) or data.get("format") != STATE_FORMAT:
-            return cls(path)  # another format: everything posts again
-        return cls(path, dict(data.get("jobs", {})))
+        jobs = data.get("jobs") if isinstance(data, dict) else None
+        if (
+            not isinstance(data, dict)
+            or data.get("format") != STATE_FORMAT
+            or not isinstance(jobs, dict)
+            or not all(isinstance(entry, dict) for entry in jobs.values())
+        ):
+            if path.stat().st_size and not force:
+                raise InputError(
+                    "this is not a gecent batch state file (or one of another format): give "
+                    "another --state, remove it, or give --force to replace it",
+                    SourcePosition(str(path)),
+                )
+            return state
+        state.jobs = dict(jobs)
+        return state
 
-    def unchanged(self, job: Job, key: str, plugins: PluginSet) -> Outcome | None:
-        """The job's last outcome when nothing it depends on changed, else None."""
+    def unchanged(self, job: Job, key: str | None, plugins: PluginSet) -> Outcome | None:
+        """The job's last outcome when nothing it depends on changed, else None (also when
+        its entry was damaged: the job then simply posts)."""
+        try:
+            return self._unchanged(job, key, plugins)
+        except (TypeError, ValueError, AttributeError):
+            return None
+
+    def _unchanged(self, job: Job, key: str | None, plugins: PluginSet) -> Outcome | None:
         entry = self.jobs.get(_entry_key(job))
-        if entry is None or entry.get("key") != key:
+        if key is None or entry is None or entry.get("key") != key:
             return None
         if job.verify and not entry.get("verified"):
             return None  # posted before without the check asked for now
@@ -101,8 +132,11 @@ class State:
             current = text_hash(pack.text) if pack is not None else ""
         if not current or current != entry.get("machine_hash"):
             return None
-        for path, digest in entry.get("outputs", {}).items():
-            if not os.path.exists(path) or file_hash(path) != digest:
+        for path, digest in dict(entry.get("outputs", {})).items():
+            try:
+                if file_hash(path) != digest:
+                    return None
+            except OSError:
                 return None
         summary = entry.get("summary", {})
         return Outcome(
@@ -115,18 +149,22 @@ class State:
             blocks=int(summary.get("blocks", 0)),
             tape_feet=float(summary.get("tape_feet", 0.0)),
             cut_minutes=float(summary.get("cut_minutes", 0.0)),
-            verify="passed" if job.verify else "",
+            verify=str(entry.get("verify", "")) if job.verify else "",
         )
 
-    def record(self, job: Job, key: str, outcome: Outcome, written: dict[str, str]) -> None:
+    def record(self, job: Job, key: str | None, outcome: Outcome, written: dict[str, str]) -> None:
         """A job posted (and written): remember what it depended on and what it wrote."""
+        if key is None:
+            return
         self.jobs[_entry_key(job)] = {
             "key": key,
             "input": job.input,
             "machine": outcome.machine,
             "machine_hash": outcome.machine_hash,
             "outputs": written,
-            "verified": outcome.verify == "passed",
+            # a tape rs274 cannot read (not G-code) counts as checked as far as it can be
+            "verified": outcome.verify == "passed" or outcome.verify.startswith("n/a"),
+            "verify": outcome.verify,
             "summary": {
                 "warnings": outcome.warnings,
                 "blocks": outcome.blocks,
@@ -139,12 +177,20 @@ class State:
         """A job failed: it posts again next time, whatever changed."""
         self.jobs.pop(_entry_key(job), None)
 
-    def save(self) -> None:
-        self.path.parent.mkdir(parents=True, exist_ok=True)
+    def save(self) -> str | None:
+        """Write the record; what went wrong, or None (the batch's outputs stand either way:
+        the next batch then posts them again)."""
         temporary = self.path.with_name(self.path.name + f".{os.getpid()}.tmp")
         data = {"format": STATE_FORMAT, "gecent": __version__, "jobs": self.jobs}
-        temporary.write_text(json.dumps(data, indent=1, sort_keys=True), encoding="utf-8")
-        os.replace(temporary, self.path)
+        try:
+            self.path.parent.mkdir(parents=True, exist_ok=True)
+            temporary.write_text(json.dumps(data, indent=1, sort_keys=True), encoding="utf-8")
+            os.replace(temporary, self.path)
+        except OSError as exc:
+            with contextlib.suppress(OSError):
+                temporary.unlink(missing_ok=True)
+            return f"cannot write the batch state file {self.path}: {exc.strerror or exc}"
+        return None
 
 
 def _entry_key(job: Job) -> str:

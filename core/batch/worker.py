@@ -12,7 +12,7 @@ import threading
 import time
 from collections.abc import Iterator
 from contextlib import contextmanager
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from functools import lru_cache
 from pathlib import Path
 
@@ -248,11 +248,18 @@ def _plugins(macros: tuple[tuple[str, str], ...], folder: Path) -> PluginSet:
     from gecent.core.macros.table import with_macros
 
     plugins = installed()
-    for name, text in macros:
-        spooled = folder / "macros" / name
-        spooled.parent.mkdir(exist_ok=True)
+    for number, (named, text) in enumerate(macros):
+        spooled = folder / "macros" / str(number) / Path(named).name
+        spooled.parent.mkdir(parents=True)
         spooled.write_text(text, encoding="utf-8")
-        plugins = with_macros(plugins, load_macro_file(spooled), f"file {name}")
+        try:
+            loaded = load_macro_file(spooled)
+        except GecentError as exc:  # named as the job names the file, not as spooled
+            where = getattr(exc, "where", None)
+            if isinstance(where, SourcePosition) and where.file == str(spooled):
+                exc.where = replace(where, file=named)  # type: ignore[attr-defined]
+            raise
+        plugins = with_macros(plugins, loaded, f"file {named}")
     return plugins
 
 
