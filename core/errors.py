@@ -59,6 +59,20 @@ FATAL_ERRORS: dict[int, tuple[str, str]] = {
     9001: ("OUTPUT", "The IHEAD flag was not set up properly"),
 }
 
+# The manual's numbered warning comments (COMENT n) that gecent prints, with the text it
+# prints (the module that prints each keeps its own constant; tests/test_macros_wave9.py
+# checks they agree): a diagnostic macro's $P2 (spec 09 §5.12). gecent's other warnings
+# have no number in the manual ($P2 = $NULL).
+WARNING_COMMENTS: dict[int, str] = {
+    19: "TOOL LENGTH IS ZERO",  # core/tool.py (text lost in the scan)
+    22: "REQUESTED MISCELLANEOUS FUNCTION CODE IS NOT AVAILABLE ON THIS MACHINE",  # L29355
+    40: "ATTEMPTING TO UNLOAD TOOL IN WRONG MAGAZINE POCKET.",  # core/statements/handling.py
+    47: "END OR RESET HAS NOT BEEN FOLLOWED BY A FROM POINT.",  # L34080
+    63: "SPINDLE SPEED COULD NOT BE FOUND.",  # DSRROW, above the range (L14588-14590)
+    66: "Z IS BELOW ZERO AFTER THE OPTION 140 ADJUSTMENT",  # core/motion/positioning.py
+    80: "LOWEST SPEED IN RANGE IS OUTPUT.",  # DSRROW, below the range (L30766-30777)
+}
+
 
 @dataclass(frozen=True, slots=True)
 class SourcePosition:

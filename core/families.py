@@ -152,6 +152,7 @@ class HookPoint(Enum):
     FROM = 8
     THREAD = 12
     SPINDLE_CODE = "spindle-type-7"
+    FEED_RANGE = "fedrat-feed-range-dwell"  # FEDRAT's option 93 < 0 dwell (001 L25507-25511)
 
 
 class HookResult(Enum):

@@ -59,8 +59,8 @@ from gecent.core.motion.guard import (
 from gecent.core.motion.linear import LinearMotion, path_length
 from gecent.core.motion.mixed import (
     MIXED_CONTROL,
-    check_mixed_machine,
     contouring_moved,
+    enter_way,
     goes_positioning,
 )
 from gecent.core.motion.positioning import PositioningMotion
@@ -459,8 +459,9 @@ class Run(CycleHoles, Elements):
     def _mixed_way(self, record: Motion) -> bool:
         """Option 1 = 3: True when the record goes out by the positioning control, else by
         the contouring one, whose moves make the positioning control's held words stale."""
-        check_mixed_machine(self.machine, record)
-        if goes_positioning(self.state, record, self.cycle is not None):
+        way = goes_positioning(self.state, record, self.cycle is not None)
+        enter_way(self.state, self.positioning, way)  # options 140 and 86 < 0: Z's frame
+        if way:
             if self._circle is not None:
                 self._circle.centre = None  # a rapid move is never an arc: CIRFLG is spent
             return True

@@ -444,7 +444,16 @@ class SpindleElement:
             spindle.range = 1
         if machine.number_option(127) == 1:
             if not self.has_s_register:
-                raise NotYetSupported("spindle off by S0 (option 127 = 1) without an S register")
+                # the S0 is the only way off the machine file gives (no M05 fallback):
+                # the file contradicts itself, whatever the part program says
+                raise MachineDefinitionError(
+                    machine.origin,
+                    "optab",
+                    127,
+                    "option 127 = 1 turns the spindle off by an S0 code (001 L25902-25910), "
+                    f"but machine {machine.label} has no S register (REGFOR(12)) to punch "
+                    "it in; give the S register or option 127 = 0 (TABLEM(6), M05)",
+                )
             self.state.pending.spindle = 0.0
             self.s_in_force = 0.0
             self.state.pending.rpm = 0.0

@@ -18,7 +18,7 @@ from pathlib import Path
 
 import pytest
 from gecent.core.dispatch.post import post
-from gecent.core.errors import InputError, NotYetSupported
+from gecent.core.errors import InputError
 from gecent.core.feed.servo import (
     arc_feed_limit,
     bisector_slope,
@@ -286,7 +286,6 @@ def test_no_room_to_slow_down_is_warned(tmp_path: Path) -> None:
     [
         ("MACHIN/GECENT,23,OPTAB,55,1,OPTAB,71,0", InputError, "option 71 = 0"),
         ("MACHIN/GECENT,23,OPTAB,55,1,OPTAB,72,0.1", InputError, "option 72"),
-        ("MACHIN/GECENT,23,OPTAB,55,1,OPTAB,254,1", NotYetSupported, "option 254"),
     ],
 )
 def test_bad_or_unbuilt_settings(tmp_path: Path, machin: str, error: type, text: str) -> None:

@@ -8,7 +8,7 @@ import pytest
 from gecent.core.cl.apt_source import AptSourceReader
 from gecent.core.cl.records import Statement
 from gecent.core.dispatch.post import post as post_file
-from gecent.core.errors import InputError, NotYetSupported
+from gecent.core.errors import InputError
 from gecent.core.machine.loader import load_machine_text
 from gecent.core.motion.cycles import Cycle, cycle_legs, parse_cycle
 from gecent.core.output.tape import tape_lines
@@ -110,11 +110,15 @@ def test_return_levels() -> None:
     assert cycle_legs(Cycle("DRILL", 1, 0.1, return_level=0.5), at, hole, 2.0)[-1].point[2] == 0.5
 
 
-def test_a_control_with_its_own_drilling_cycle_is_not_built_yet() -> None:
+def test_a_control_with_its_own_drilling_cycle_but_no_r_plane_code_drills_by_moves() -> None:
+    # was NotYetSupported (incremental dimensions); wave 9 (h7) builds G91's block, and this
+    # control, with no G99 (TABLEG(126)), has the cycle drilled by moves
     text = '[machine]\nname = "g81"\ntitle = "G81 MILL"\n[tableg]\n82 = 81\n'
     machine = load_machine_text(text, "g81.toml")
-    with pytest.raises(NotYetSupported, match=r"TABLEG\(82\)"):
-        post(["CYCLE/DRILL,0.5,IPM,3,0.1"], machine)
+    result = post(["CYCLE/DRILL,0.5,IPM,3,0.1"], machine)
+    assert [d.text for d in result.diagnostics] == [
+        "CYCLE/DRILL IS DRILLED BY MOVES: NO RETURN CODE TABLEG(126)"
+    ]
 
 
 BOHREN_ON_MACH23 = [

@@ -11,7 +11,7 @@ import pytest
 from gecent.core.cl.apt_source import AptSourceReader
 from gecent.core.cl.records import Statement
 from gecent.core.dispatch.post import post as post_file
-from gecent.core.errors import Diagnostic, InputError, NotYetSupported
+from gecent.core.errors import Diagnostic, InputError
 from gecent.core.machine.loader import load_machine_text
 from gecent.core.machine.selection import resolve_machine
 from gecent.core.motion.cycles import Cycle, cycle_legs, parse_cycle
@@ -211,10 +211,13 @@ def test_a_cycle_on_a_machine_without_z_is_bad_input() -> None:
         post(["FROM/0,0,1", "CYCLE/DRILL,1,IPM,2,0.1", "GOTO/0,0,0"], flat)
 
 
-def test_drag_on_a_machine_without_a_spindle_stop_is_not_supported() -> None:
+def test_drag_on_a_machine_without_a_spindle_stop_is_comment_22() -> None:
+    # was NotYetSupported; wave 9 (h7): STOREM's comment 22 (tests/test_cycles_wave9.py)
     no_stop = load_machine_text('[machine]\nname = "m"\ntitle = "M"\n[tablem]\n6 = "absent"\n')
-    with pytest.raises(NotYetSupported, match=r"TABLEM\(6\)"):
-        post(["CYCLE/BORE,DRAG,1,IPM,2,0.1"], no_stop)
+    result = post(["CYCLE/BORE,DRAG,1,IPM,2,0.1"], no_stop)
+    assert [d.text for d in result.diagnostics] == [
+        "REQUESTED MISCELLANEOUS FUNCTION CODE IS NOT AVAILABLE ON THIS MACHINE"
+    ]
 
 
 BORE_DWELL = (

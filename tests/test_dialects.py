@@ -97,7 +97,9 @@ def test_without_the_dialect_the_file_stops_at_its_first_vendor_word() -> None:
         ["post", str(SOLIDWORKS / FILES[0]), "--machine", "linuxcnc-mill", "--dialect", "none",
          "-o", "/dev/null"],
     )  # fmt: skip
-    assert done.exit_code == 3 and "Sacrifice-Board.apt:5" in done.output  # LOAD/TOOL,12
+    # LOAD/TOOL,12: the multiaxis tool change, bad input on a machine without a transform
+    # class (issue 22 wave 9; it was not yet supported)
+    assert done.exit_code == 2 and "Sacrifice-Board.apt:5" in done.output
 
 
 @needs_corpus

@@ -121,7 +121,8 @@ def test_fatal_19_the_from_points_tool_axis_is_not_a_unit_vector(tmp_path: Path)
     assert "fatal error 19 (FROMS): Direction cosines of the FROM point" in err
     assert "|i, j, k| = 2" in err and "part.apt:3 (record 3)" in err
     assert "*** GEDUMP ***" in listing.read_text()
-    unit = ["MACHIN/GECENT,40", "MULTAX", "FROM/-19,48,31.75,0,0,1", "FEDRAT/10"]
+    # (option 110 = 0: these CL points are outside MACF40's machine windows, MCHCON 2)
+    unit = ["MACHIN/GECENT,40,OPTAB,110,0", "MULTAX", "FROM/-19,48,31.75,0,0,1", "FEDRAT/10"]
     code, err, tape, _ = run(tmp_path, [*unit, "GOTO/-18,48,31.75,0,0,2"], None)
     assert code == 0 and tape.exists()
     assert "NOT A UNIT VECTOR; THEY ARE NORMALIZED" in err

@@ -242,7 +242,8 @@ def test_mach40_posts_a_three_axis_program_with_its_geout2_listing(tmp_path: Pat
     part x is machine Y, part y machine -X, and Z is raised by R = option 104 = 4 in
     (core/motion/multiaxis.py); the listing's ABS line has A and C in degrees."""
     source = tmp_path / "t40.apt"
-    program = ["PARTNO T", "MACHIN/GECENT,40", "FROM/0,0,5", "FEDRAT/10", "SPINDL/500"]
+    # (option 110 = 0: machine Z 4 at Y 1 is below MACF40's Z window, its MCHCON 2 test)
+    program = ["PARTNO T", "MACHIN/GECENT,40,OPTAB,110,0", "FROM/0,0,5", "FEDRAT/10", "SPINDL/500"]
     source.write_text("\n".join([*program, "GOTO/1,1,0", "GOTO/2,1,0", "FINI"]) + "\n")
     code, err, tape, lis = cli(tmp_path, source)
     assert code == 0, err

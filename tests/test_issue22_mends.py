@@ -14,7 +14,8 @@ def test_cycle_off_ends_the_cycle_when_the_macfun_handles_it(tmp_path: Path) -> 
     move, not another hole."""
     source = tmp_path / "c.apt"
     source.write_text(
-        "PARTNO C\nMACHIN/GECENT,40,OPTAB,133,1\nFROM/0,0,10,0,0,1\nFEDRAT/10\n"
+        # (option 110 = 0: machine Z 14 at Y 0 is below MACF40's Z window, its MCHCON 2 test)
+        "PARTNO C\nMACHIN/GECENT,40,OPTAB,133,1,OPTAB,110,0\nFROM/0,0,10,0,0,1\nFEDRAT/10\n"
         "CYCLE/DRILL,1,IPM,5,0.1\nGOTO/1,0,5\nCYCLE/OFF\nGOTO/2,0,5\nFINI\n"
     )
     tape = tmp_path / "c.tap"

@@ -4,7 +4,6 @@ of changed values, the enable switches and the no-re-entry rule."""
 from __future__ import annotations
 
 import pytest
-from gecent.core.errors import NotYetSupported
 from gecent.core.macros import Kind, Macros, Phase
 
 from .macros_helpers import post, warnings
@@ -314,15 +313,16 @@ def test_cycle_output_in_startup_puts_commands_after_the_block() -> None:
     assert sum("X10." in line for line in lines) == 1  # OUTPUT did it; not again at the exit
 
 
-def test_a_cycle_output_switch_not_built_is_named() -> None:
+def test_a_cycle_output_switch_set_false_leaves_its_word_out() -> None:
+    """(tests/test_macros_wave9.py has the switches in full.)"""
     macros = Macros()
 
     @macros.event(Kind.CYCLE, Phase.STARTUP)
     def before(ctx):  # type: ignore[no-untyped-def]
         ctx.p.feed_out = False
 
-    with pytest.raises(NotYetSupported, match=r"\$P8 \(feed\)"):
-        post(CYCLE, macros)
+    tape, _ = post(CYCLE, macros)
+    assert "G81" in tape and "F50." not in tape
 
 
 def test_register_macro_changes_and_drops_registers() -> None:
@@ -467,16 +467,18 @@ def test_system_variables_are_checked_by_name() -> None:
         post(HEAD + "FINI\n", macros)
 
 
-def test_cycle_macros_on_a_positioning_machine_are_not_built_and_say_so() -> None:
+def test_cycle_macros_on_a_positioning_machine_run_around_the_hole() -> None:
+    # was NotYetSupported; wave 9 (h7) builds them (tests/test_cycles_wave9.py)
     macros = Macros(machine="mach24")
+    seen: list[float] = []
 
     @macros.event(Kind.CYCLE, Phase.STARTUP)
     def before(ctx):  # type: ignore[no-untyped-def]
-        return None
+        seen.append(ctx.p.cl[0])
 
     program = (
         "PARTNO T\nFROM/0,0,1\nSPINDL/500\nFEDRAT/10\nCYCLE/DRILL,DEPTH,.5,CLEAR,.1,IPM,5\n"
         "GOTO/1,1,0\nCYCLE/OFF\nFINI\n"
     )
-    with pytest.raises(NotYetSupported, match="cycle macros on a positioning machine"):
-        post(program, macros, "mach24")
+    tape, _ = post(program, macros, "mach24")
+    assert seen == [1.0] and "G81" in tape

@@ -16,7 +16,6 @@ from __future__ import annotations
 import math
 
 import pytest
-from gecent.core.errors import NotYetSupported
 from gecent.core.macros import Kind, Macros, Phase
 
 from .macros_helpers import post
@@ -178,9 +177,9 @@ def test_x21_axes_of_a_three_axis_mill() -> None:
     assert seen == ["XYZ***"]
 
 
-def test_x23_feed_alone_before_a_cycle_is_not_built_and_says_so() -> None:
-    """X23: $P1 = -2 then OUTPUT (the cycle's feed in a block of its own) stops the run
-    with an error naming it; $P1 = 1 and OUTPUT alone output the cycle."""
+def test_x23_feed_alone_before_a_cycle() -> None:
+    """X23: $P1 = -2 then OUTPUT put the cycle's feed in a block of its own; $P1 = 1 and
+    OUTPUT then output the cycle (tests/test_macros_wave9.py has more)."""
     macros = Macros()
 
     @macros.event(Kind.CYCLE, Phase.STARTUP)
@@ -191,5 +190,5 @@ def test_x23_feed_alone_before_a_cycle_is_not_built_and_says_so() -> None:
         ctx.output()
 
     program = HEAD + "CYCLE/DRILL,DEPTH,5,CLEAR,2,MMPM,50\nGOTO/10,0,0\nCYCLE/OFF\nFINI\n"
-    with pytest.raises(NotYetSupported, match=r"\$P1 = -2 \(the feed alone\)"):
-        post(program, macros)
+    tape, _ = post(program, macros)
+    assert "N1 F50.\nN2 G99\nN3 G81 X10. Y0. Z-5. R2.\n" in tape

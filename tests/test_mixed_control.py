@@ -21,7 +21,6 @@ Every tape below is worked by hand from those numbers.
 from __future__ import annotations
 
 import pytest
-from gecent.core.errors import NotYetSupported
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.machine.loader import MachineFileInvalid, load_machine_text
 from gecent.core.output.block import Code
@@ -188,12 +187,6 @@ def test_fedrat_is_not_snapped_to_the_positioning_feeds() -> None:
         (Code.LINEAR, 73.0, 7.3),
         (Code.POSITION_XY, 15.0, 7.5),
     ]
-
-
-def test_z_inversion_stays_not_yet_supported_on_the_mixed_control() -> None:
-    for extra, named in (("140 = 10.0\n", "option 140"), ("86 = -1.0\n", "option 86")):
-        with pytest.raises(NotYetSupported, match=named):
-            post(["FROM/0,0,5", "GOTO/1,1,5"], m7500(extra))
 
 
 def _problems(text: str) -> list[str]:

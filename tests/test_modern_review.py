@@ -122,9 +122,8 @@ def test_chords_are_bounded_like_segments(tmp_path: Path) -> None:
         ("CIRCLE/0,0,0,0,0,1,5", "GOTO/0,3,0", 2, "the arc ends 2 off its circle"),
         ("CIRCLE/0,0,0,0,0,0,5", "GOTO/0,5,0", 2, "CIRCLE has no axis"),
         ("CIRCLE/0,0,0,0,0,1,-5", "GOTO/0,5,0", 2, "CIRCLE radius must be more than 0"),
-        ("CIRCLE/0,0,0,1,1,1,5", "GOTO/0,5,0", 3, "a circle about an axis along none of"),
     ],
-    ids=["end off", "no axis", "negative radius", "tilted"],
+    ids=["end off", "no axis", "negative radius"],  # (tilted: built, test_modern_forms_wave9)
 )
 def test_a_circle_record_that_is_no_arc_is_refused(
     tmp_path: Path, circle: str, end: str, status: int, message: str

@@ -7,7 +7,7 @@ docs/decisions.md, "Options 80, 222 and positioning cycles"."""
 from __future__ import annotations
 
 import pytest
-from gecent.core.errors import InputError, NotYetSupported
+from gecent.core.errors import InputError
 from gecent.core.machine.catalogue import catalogue
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.machine.loader import load_machine_text
@@ -157,12 +157,14 @@ def test_without_z_on_tape_the_missing_cycle_is_bad_input() -> None:
     assert caught.value.where is not None and caught.value.where.line == 2
 
 
-def test_forms_with_a_dwell_or_spindle_codes_stay_unbuilt_by_moves() -> None:
+def test_forms_with_a_dwell_or_spindle_codes_are_built_by_moves() -> None:
+    # were NotYetSupported; wave 9 (h7) builds them: tests/test_cycles_wave9.py
     machine = overlay("mach24", '[tableg]\n82 = "absent"\n85 = "absent"\n[optab]\n130 = 1.0\n')
-    with pytest.raises(NotYetSupported, match=r"CYCLE/TAP by moves .*TABLEG\(85\)"):
-        post(["FROM/0,0,5", "CYCLE/TAP,DEPTH,0.5,IPM,6,CLEAR,0.1"], machine)
-    with pytest.raises(NotYetSupported, match=r"CYCLE/DRILL by moves"):
-        post(["FROM/0,0,5", "CYCLE/DRILL,DEPTH,0.5,IPM,6,CLEAR,0.1,DWELL,2"], machine)
+    post(["FROM/0,0,5", "CYCLE/TAP,DEPTH,0.5,IPM,6,CLEAR,0.1", "GOTO/4,4,0"], machine)
+    drilled = post(
+        ["FROM/0,0,5", "CYCLE/DRILL,DEPTH,0.5,IPM,6,CLEAR,0.1,DWELL,2", "GOTO/4,4,0"], machine
+    )
+    assert "N003G04X+002000" in tape_lines(drilled.blocks)
 
 
 def test_in_the_control_lacks_withdraws_then_moves_across() -> None:

@@ -6,7 +6,7 @@
 from __future__ import annotations
 
 import pytest
-from gecent.core.errors import InputError, MachineDefinitionError, NotYetSupported
+from gecent.core.errors import InputError, MachineDefinitionError
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.machine.loader import load_machine_text, standard_machine
 from gecent.core.output.block import Code
@@ -217,11 +217,6 @@ def test_a_head_code_the_machine_lacks_is_comment_22() -> None:
     result = post(["SELECT/HED,3"], heads())
     assert tape_lines(result.blocks) == []
     assert [d.text for d in result.diagnostics] == [NOT_AVAILABLE]
-
-
-def test_head_2_gear_codes_are_named_not_built() -> None:
-    with pytest.raises(NotYetSupported, match=r"rapid gear shifts of head 2 \(TABLEM\(142\)"):
-        post(["SELECT/HED,2"], heads("142 = 44\n"))
 
 
 @pytest.mark.parametrize(

@@ -4,7 +4,7 @@ DSRROW's option 90, the empty-table check, and SPINDL/OFF on a machine without M
 from __future__ import annotations
 
 import pytest
-from gecent.core.errors import MachineDefinitionError, NotYetSupported
+from gecent.core.errors import MachineDefinitionError
 from gecent.core.machine.loader import load_machine_text, standard_machine
 from gecent.core.output.tape import tape_lines
 from gecent.core.plugins import get_plugins
@@ -60,19 +60,15 @@ def test_spindle_off_without_m05_is_a_comment_and_no_empty_block() -> None:
     assert [d.text for d in result.diagnostics][-1].startswith("REQUESTED MISCELLANEOUS")
 
 
-def test_sfm_on_a_circle_in_one_block_is_named_as_not_built() -> None:
+def test_sfm_on_a_circle_in_one_block_is_built() -> None:
     """SFM on quadrant circles is built (tests/test_spindle_wave3.py); a control taking the
-    whole arc in one block (option 253) is not."""
+    whole arc in one block (option 253) takes it as whole arcs between the shift points
+    (tests/test_modern_forms_wave9.py): the quarter circle turns pi / 2 in all."""
     base = get_plugins().machine("mach04").load()
     machine = load_machine_text('[machine]\nname = "m"\n[optab]\n253 = 1.0\n', "m.toml", base=base)
-    with pytest.raises(NotYetSupported, match="SFM on a circle in one block"):
-        post(
-            [
-                "FROM/5,2,0",
-                "FEDRAT/10,RANGE,1",
-                "SPINDL/100,SFM",
-                "CIRCLE/5,0,0,0,0,1,2",
-                "GOTO/3,0,0",
-            ],
-            machine,
-        )
+    result = post(
+        ["FROM/5,2,0", "FEDRAT/10,RANGE,1", "SPINDL/100,SFM", "CIRCLE/5,0,0,0,0,1,2", "GOTO/3,0,0"],
+        machine,
+    )
+    sweeps = [b.sweep or 0.0 for b in result.blocks if abs(int(b.code)) == 10]
+    assert len(sweeps) > 1 and sum(sweeps) == pytest.approx(1.5707963267948966)  # pi / 2

@@ -16,7 +16,7 @@ from __future__ import annotations
 from math import asin, cos, sqrt
 
 import pytest
-from gecent.core.errors import InputError, NotYetSupported
+from gecent.core.errors import InputError
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.machine.loader import load_machine_text, standard_machine
 from gecent.core.motion.sfm import EndCondition, SpeedLadder, arc_cuts, shift_radius
@@ -153,9 +153,10 @@ def test_a_fixed_radius_turns_the_circle_at_one_speed() -> None:
     assert blocks == ["N002G04S530M03", "N005G03X-1Z-1I1F003"]
 
 
-def test_sfm_on_chords_is_named_as_not_built() -> None:
-    with pytest.raises(NotYetSupported, match="chords"):
-        post([*QUARTER, *ARC], overlay("262 = 0.001", discrete_lathe()))
+def test_sfm_on_chords_is_built() -> None:
+    """Each chord is cut at the shift radii as a line is (tests/test_modern_forms_wave9.py)."""
+    result = post([*QUARTER, *ARC], overlay("262 = 0.001", discrete_lathe()))
+    assert (95382, 11141, 0) in [b.position for b in result.blocks]
 
 
 def test_without_sfm_the_circle_is_unchanged() -> None:

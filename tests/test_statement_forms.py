@@ -6,7 +6,7 @@ PIVOTZ. The readings are in docs/decisions.md, "Statement forms (issue 22)"."""
 from __future__ import annotations
 
 import pytest
-from gecent.core.errors import InputError, MachineDefinitionError, NotYetSupported
+from gecent.core.errors import InputError, MachineDefinitionError
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.machine.loader import load_machine_text
 from gecent.core.output.tape import tape_lines
@@ -209,8 +209,9 @@ def test_forms_the_manual_does_not_define_are_bad_input(statement: str, message:
 
 def test_option_93_below_zero_needs_the_machines_macfun() -> None:
     """The dwell is the MACFUN's (001 L25507-25511): without one (option 133 = 0) the
-    machine file is wrong; with one, gecent has no hook for it and says so."""
+    machine file is wrong, and so it is when the machine's MACFUN has no feed range hook
+    (the hook itself: tests/test_statements_wave9.py)."""
     with pytest.raises(MachineDefinitionError, match="option 133 = 0"):
         post(["FEDRAT/1,RANGE,2"], overlaid("mach04", "[optab]\n93 = -2.0\n"))
-    with pytest.raises(NotYetSupported, match="no MACFUN hook"):
+    with pytest.raises(MachineDefinitionError, match="has no feed range hook"):
         post(["FEDRAT/1,RANGE,2"], overlaid("mach04", "[optab]\n93 = -2.0\n133 = 1.0\n"))

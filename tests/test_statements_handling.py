@@ -4,7 +4,7 @@
 from __future__ import annotations
 
 import pytest
-from gecent.core.errors import InputError, NotYetSupported
+from gecent.core.errors import InputError
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.machine.loader import load_machine_text, standard_machine
 from gecent.core.output.block import Block, Code
@@ -114,7 +114,7 @@ def test_load_sets_r_plus_tl_of_the_loaded_tool() -> None:
 @pytest.mark.parametrize(
     ("lines", "machine", "error", "text"),
     [
-        (["FROM/0,0,0", "LOAD/TOOL,1"], "standard", NotYetSupported, "option 116"),
+        (["FROM/0,0,0", "LOAD/TOOL,1"], "standard", InputError, "OPTAB\\(116\\) must be set"),
         (["LOAD/TOOL,1"], "mach40", InputError, "FROM"),
         (["FROM/0,0,10,0,0,1", "LOAD/1"], "mach40", InputError, "LOAD/TOOL, n"),
         (["FROM/0,0,10,0,0,1", "LOAD/TOOL,1,LENGTH,-1"], "mach40", InputError, "length > 0"),

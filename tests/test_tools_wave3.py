@@ -11,7 +11,7 @@ of tests/test_positioning.py 1200 RPM is S712 (001 L1165-1166).
 from __future__ import annotations
 
 import pytest
-from gecent.core.errors import InputError, NotYetSupported
+from gecent.core.errors import InputError
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.output.block import Code
 from gecent.core.output.element import NO_MOVE_FOR_S_T
@@ -106,8 +106,9 @@ def test_gohome_under_a_control_cycle_drills_no_hole_at_home() -> None:
     ]
 
 
-def test_gohome_of_a_rotary_axis_on_a_positioning_machine_stays_unbuilt() -> None:
-    with pytest.raises(NotYetSupported, match="GOHOME of a rotary axis"):
+def test_gohome_of_a_rotary_axis_without_a_rotary_register_is_bad_input() -> None:
+    """(GOHOME of a rotary axis on a machine with one: tests/test_statements_wave9.py)"""
+    with pytest.raises(InputError, match="no rotary register"):
         post(["FROM/0,0,5", "GOHOME"], mach24("[optab]\n188 = 90.0\n"))
 
 

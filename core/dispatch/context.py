@@ -7,7 +7,7 @@ satisfies this protocol and dispatches to them.
 
 from __future__ import annotations
 
-from typing import Protocol
+from typing import TYPE_CHECKING, Protocol
 
 from gecent.core.errors import Diagnostic
 from gecent.core.feed.positioning import FeedType
@@ -16,6 +16,8 @@ from gecent.core.machine.definition import MachineDefinition
 from gecent.core.motion.circle import CircularMotion
 from gecent.core.motion.control_cycles import ControlCycles
 from gecent.core.motion.cycles import Cycle
+from gecent.core.motion.linear import LinearMotion
+from gecent.core.motion.positioning import PositioningMotion
 from gecent.core.motion.rotary import RotaryElement
 from gecent.core.output.block import Block
 from gecent.core.output.element import OutputElement
@@ -24,6 +26,9 @@ from gecent.core.spindle import SpindleElement
 from gecent.core.state import PostState, RunResult
 from gecent.core.tool import ToolElement
 from gecent.core.units import UnitScale
+
+if TYPE_CHECKING:
+    from gecent.core.motion.multiaxis import MultiaxisMotion
 
 
 class Post(Protocol):
@@ -56,6 +61,16 @@ class Post(Protocol):
 
     @property
     def rotary(self) -> RotaryElement: ...
+
+    @property
+    def motion(self) -> LinearMotion: ...
+
+    @property
+    def positioning(self) -> PositioningMotion: ...
+
+    @property
+    def multiaxis(self) -> MultiaxisMotion:
+        """The multiaxis element (made on first use: it brings numpy)."""
 
     @property
     def feed_type(self) -> FeedType: ...

@@ -93,9 +93,17 @@ class Elements:
     @property
     def positioning(self) -> PositioningMotion:
         if self._positioning is None:
+            output = self.output
             self._positioning = PositioningMotion(
-                self.state, self.output.output, self.warn, self.rapid.motion
+                self.state,
+                output.output,
+                self.warn,
+                self.rapid.motion,
+                output.store_m,
+                output.dwell,
             )
+            if self.macros is not None:
+                self.macros.hooks.positioning_element(self._positioning)
         return self._positioning
 
     @property

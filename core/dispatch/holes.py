@@ -6,9 +6,12 @@ core/motion/multiaxis_cycles.py). Mixed into the run (core/run.py)."""
 
 from __future__ import annotations
 
+from collections.abc import Callable
+from dataclasses import replace
 from typing import TYPE_CHECKING
 
 from gecent.core.cl.records import Motion, MotionSubtype
+from gecent.core.errors import Diagnostic
 from gecent.core.feed.rapid import RapidTraverse
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.motion.circle import CircularMotion
@@ -28,6 +31,7 @@ class CycleHoles:
     """Mixed into the run: what it needs of it is declared here."""
 
     state: PostState
+    warn: Callable[[Diagnostic], None]
     cycle: Cycle | None
     cycle_first_z: float | None
     control_cycles: ControlCycles | None
@@ -64,6 +68,15 @@ class CycleHoles:
                 hole = (point[0], point[1], point[2])
             if self.cycle_first_z is None:
                 self.cycle_first_z = at[2]
+            control = self.control_cycles
+            turned = None if control is None else control.turned(self.cycle)
+            if control is not None and turned is not None:
+                # a left-hand tap since the CYCLE statement: G80, then the tap by moves
+                if control.first_turn(self.cycle):
+                    self.warn(Diagnostic(f"CYCLE/TAP IS DRILLED BY MOVES: {turned}", record.where))
+                control.off(record.number)
+                self.simulated_hole(record, at, hole)
+                continue
             if self.control_cycles is not None:
                 self.circle.select_plane(0, record.number)  # the control drills along Z
                 feed = self.state.feed
@@ -83,9 +96,10 @@ class CycleHoles:
         at: tuple[float, float, float],
         hole: tuple[float, float, float],
     ) -> None:
-        """A hole by rapid and feed moves (core/motion/cycles.py)."""
-        cycle = self.cycle
-        assert cycle is not None and self.cycle_first_z is not None
+        """A hole by rapid and feed moves (core/motion/cycles.py); the spindle turned again
+        after TAP, DRAG or MANUAL is the spindle's direction at the hole."""
+        assert self.cycle is not None and self.cycle_first_z is not None
+        cycle = replace(self.cycle, restart_cell=5 if self.state.spindle.direction < 0 else 4)
         if cycle.kind == "DEEP" and cycle.step:
             pecks = int(min(abs(cycle.depth / cycle.step), 1e18))
             check_segments(pecks, self.state.max_segments, record.where, "deep-hole cycle")

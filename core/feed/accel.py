@@ -23,7 +23,7 @@ from typing import TYPE_CHECKING, Protocol
 
 from gecent.core.absent import ABSENT
 from gecent.core.cl.records import Statement
-from gecent.core.errors import Diagnostic, InputError, NotYetSupported
+from gecent.core.errors import Diagnostic, InputError
 from gecent.core.feed.servo import (
     PER_SECOND,
     arc_feed_limit,
@@ -114,14 +114,28 @@ def acceleration_test(output: Finisher) -> AccelerationTest | None:
     machine = state.machine
     if machine.number_option(55) != 1 or machine.number_option(1) != 0:
         return None
+    # the manual's own A/D was "not currently tested, therefore the standard value must be
+    # used" (001 L25094-25108); gecent builds §4.3's analysis for the three slides of one
+    # contouring head and refuses the rest (docs/decisions.md, h9)
     for refused, why in (
-        (state.head != 0, "a multihead machine"),
-        (machine.multiaxis, "a multiaxis machine"),
-        (machine.number_option(254) == 1, "F as the feed itself (option 254)"),
+        (state.head != 0, AD_MULTIHEAD),
+        (machine.multiaxis, AD_MULTIAXIS),
     ):
         if refused:
-            raise NotYetSupported(f"A/D testing (option 55 = 1) on {why}")
+            raise InputError(f"A/D testing (option 55 = 1) on {why}")
     return AccelerationTest(output)
+
+
+AD_MULTIHEAD = (
+    "a multihead machine: GEMULT's merge pass puts two heads' blocks in one (001 "
+    "L7176-7206), so no block's feed belongs to one servo's corner, and the manual's A/D "
+    "is untested, its standard 0 to be used (001 L25094-25108)"
+)
+AD_MULTIAXIS = (
+    "a multiaxis machine: §4.3's servo analysis is of the three linear slides (001 "
+    "L13404-14229), while a multiaxis block turns rotary axes whose servos it does not "
+    "model, and the manual's A/D is untested, its standard 0 to be used (001 L25094-25108)"
+)
 
 
 class AccelerationTest:

@@ -14,7 +14,7 @@ from __future__ import annotations
 
 from math import ceil, floor
 
-from gecent.core.errors import NotYetSupported
+from gecent.core.errors import Diagnostic, NotYetSupported
 from gecent.core.feed.magic3 import decode, magic3
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.motion.gcode import LINEAR_RANGES
@@ -42,10 +42,15 @@ INVERSE_TIME = {
     (-4, 15): (47.0, 0.00001, 0.0999999),
 }
 _CLASS_ORDER = [location for location, _ in LINEAR_RANGES]
+# EIACOM's diagnostic (001 L30854-30904) and the feeds it converts, 0.0001 to 9999
+MAGIC_THREE_RANGE = "THE NUMBER TO BE CONVERTED TO THE MAGIC THREE FORM IS TOO LARGE OR TOO SMALL."
+MAGIC_SMALLEST, MAGIC_LARGEST = 0.0001, 9999.0
 
 
 class FeedCommand:
     def __init__(self, machine: MachineDefinition) -> None:
+        # the comments for the block being finished (EIACOM's); the output element's own
+        self.diagnostics: list[Diagnostic] = []
         # magic three's REGFOR(11) = 30 and option 26 = 1 are checked when the machine loads
         self.form = machine.number_option(10)
         fmt = machine.registers.formats[11]
@@ -69,7 +74,11 @@ class FeedCommand:
         if self.form == 1:
             code = magic3(ipm)
             if code is None:
-                raise NotYetSupported(f"magic three for a feed of {ipm:g} IPM")
+                # EIACOM's comment, then the code of the nearest feed it can convert
+                # (0.0001 or 9999, 001 L30854-30904): the feed the block gets is reported
+                self.diagnostics.append(Diagnostic(MAGIC_THREE_RANGE))
+                code = magic3(min(max(ipm, MAGIC_SMALLEST), MAGIC_LARGEST))
+                assert code is not None
             return float(code), decode(code), None
         regfor, lowest, highest = self._row(dimension_class)
         command = ipm / length
@@ -133,14 +142,21 @@ class FeedCommand:
         return k, float(half_up(command * 10**k, decimals)), regfor
 
     def _row(self, location: int) -> tuple[float, float, float]:
+        """The chart's row for the block's dimension code, else the next larger code's;
+        past the largest code the form's chart lists (G23 and G26 under -1 .. -3), the
+        largest's: the command is 1 / minutes whatever the code (D = 1), so the row gives
+        only the F format and limits, and the longest moves' row fits a longer one best
+        (docs/decisions.md, h9)."""
         start = _CLASS_ORDER.index(location)
         for candidate in _CLASS_ORDER[start:]:
             row = INVERSE_TIME.get((int(self.form), candidate))
             if row is not None:
                 return row
-        raise NotYetSupported(
-            f"inverse time (option 10 = {self.form:g}) for the TABLEG({location}) code"
-        )
+        for candidate in reversed(_CLASS_ORDER[:start]):
+            row = INVERSE_TIME.get((int(self.form), candidate))
+            if row is not None:
+                return row
+        raise AssertionError(f"no inverse time row for option 10 = {self.form:g}")
 
     def linear(self, ipm: float, gdimul: float, length: float) -> tuple[float, float]:
         """The feedrate number (option 10 = 0): (command, feed in IPM)."""

@@ -21,6 +21,11 @@ ONE_SHOT, MODAL = 1, -1
 # TABLEM cells of the gear-shift M codes (001 L23165-23227): X, Y, Z into rapid and back.
 _INTO_RAPID = (42, 44, 46)
 _BACK_TO_FEED = (43, 45, 47)
+# heads 2 and 3's own gear cells (001 L23165-23227), the selected head's (TLHEAD, SELHED)
+_HEAD_GEAR_CELLS = {
+    2: ((142, 144, 146), (143, 145, 147)),
+    3: ((148, 150, 152), (149, 151, 153)),
+}
 
 
 class RapidTraverse:
@@ -45,9 +50,19 @@ class RapidTraverse:
         self.catch_up = machine.number_option(16)
         self.into_dwell = machine.number_option(81)
         self.back_dwell = machine.number_option(82)
+        self.into_codes: tuple[float, ...] = ()
+        self.back_codes: tuple[float, ...] = ()
+        self.select_head(1)
+
+    def select_head(self, head: int) -> None:
+        """SELECT/HED,n (SELHED sets TLHEAD): the gears shifted from now on are the head's,
+        "the M code belonging to the head then in mode" (001 L7270-7278); a head-2 or
+        head-3 cell the machine leaves absent shifts nothing on that axis."""
+        machine = self.state.machine
+        into, back = _HEAD_GEAR_CELLS.get(head, (_INTO_RAPID, _BACK_TO_FEED))
         axes = (0,) if self.shifting < 0 else (0, 1, 2)
-        self.into_codes = _codes(machine, _INTO_RAPID, axes)
-        self.back_codes = _codes(machine, _BACK_TO_FEED, axes)
+        self.into_codes = _codes(machine, into, axes)
+        self.back_codes = _codes(machine, back, axes)
 
     @property
     def modal(self) -> bool:

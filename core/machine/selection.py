@@ -30,6 +30,8 @@ OUTPUT_UNIT_OPTIONS = frozenset({149, 150})
 # the MACHIN statement as MACHIN/GECENT, n, OPTAB, 112, r" (001 L10945-10963).
 CHANGED_BY_MACHIN_DESPITE_LIST = frozenset({112})
 TRANSFORM_CLASS = 116  # option 116: the multiaxis transform class (001 L25771-25777)
+MACHINE_TYPE = 132  # option 132: the type of machine, 0..8 (001 L25946-25962)
+MACHINE_TYPES = frozenset(float(n) for n in range(9))
 OFF = "OFF"
 
 
@@ -245,6 +247,8 @@ def apply_machin_options(
                 )
             )
         else:
+            if number == MACHINE_TYPE and value not in MACHINE_TYPES:
+                _machine_type_fatal(value, where)
             changes[number] = value
     for modifier in request.modifiers:
         if modifier == OFF:
@@ -268,6 +272,23 @@ def apply_machin_options(
             position,
         )
     return changed, notes
+
+
+def _machine_type_fatal(value: float, where: SourcePosition) -> None:
+    """FUNLNK, called by GEMON once the run's machine is known, "interrogate[s] the tables
+    of the Machine subroutine and set[s] up a BCD list of function overlays" from option
+    132; a type it has no overlays for is "Error 8000: Option 132 is set incorrectly",
+    through ERDMP1 (001 L31636-31662, the types L25946-25962). A MACHIN/...,OPTAB,132 the
+    run meets is that: fatal (exit 1, the listing and GEDUMP). A machine FILE with a bad
+    option 132 is refused when it loads (exit 2), before any run exists."""
+    raise FatalError(
+        8000,
+        f"MACHIN/GECENT,...,OPTAB,132,{value:g}: the machine types are 0..8 (0 lathe, 1 mill, "
+        "2 positioning, 3 drafting, 4 flame cutter, 5 welder, 6 filament winder, 7 "
+        "positioning used as a contouring, 8 positioning with the contouring option); no "
+        "function overlays for this one",
+        where,
+    )
 
 
 def _plan(

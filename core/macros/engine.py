@@ -29,6 +29,7 @@ from gecent.core.macros.host import MacroHost
 from gecent.core.macros.looks import LookAheads, describe
 from gecent.core.macros.model import (
     NO_COMMANDS,
+    NOT_DONE,
     OUTPUT_ALLOWED,
     Found,
     Kind,
@@ -50,7 +51,9 @@ from gecent.core.macros.table import MacroTable
 if TYPE_CHECKING:
     from gecent.core.cl.stream import Lookahead
 
-Action = Callable[[], None]
+# a built-in action; one returning NOT_DONE (core/macros/model.py) has not done the event
+# yet, so a later OUTPUT (or the startup macro's exit) does it (a cycle's feed alone, §5.6)
+Action = Callable[[], object]
 MAX_DEPTH = 200  # nested activations: a macro that keeps issuing what matches another
 
 
@@ -70,6 +73,10 @@ class MacroEngine(LookAheads):
         self.oe: Gathered | None = None  # $OE.*, from the last OPTYPE look-ahead
         self.operations = Operations()
         self.written: set[int] = set()  # records TAPEWT processed early: skipped when read
+        # the operation-event macro's redundancy guard (§5.9): the CL records $P3..$P4, and
+        # the last statement of each major word processed (what a redundant one repeats)
+        self.guard: tuple[int, int] | None = None
+        self.last_statements: dict[str, tuple[Any, ...]] = {}
         self.macfuns = dict(table.macfuns)  # the MACFUN hook points in force (MACHIN may change)
         self.records: Lookahead | None = None
         self._running: set[Kind] = set()  # event kinds in progress: no re-entry (§4.2 rule 3)
@@ -86,7 +93,25 @@ class MacroEngine(LookAheads):
         if self.written and record.number in self.written:
             self.written.discard(record.number)  # TAPEWT processed it already
             return
+        if self.guard is not None and self._redundant(record):
+            return
         self._match_or_builtin(record, matching=True)
+
+    def _redundant(self, record: Record) -> bool:
+        """§5.9: from the OPTYPE to the first cut ($P3..$P4) a post-processor command the
+        same as the last of its major word (the state it would set is in force: the OE
+        macro output it, or the program repeats itself) is not output again."""
+        assert self.guard is not None
+        first, last = self.guard
+        if record.number > last:
+            self.guard = None  # the cut has begun: commands are output even when redundant
+            return False
+        return (
+            record.number >= first
+            and isinstance(record, Statement)
+            and record.major in MODAL_COMMANDS
+            and self.last_statements.get(record.major) == _statement_key(record)
+        )
 
     def fget(self, majors: tuple[str, ...], first: int, last: int) -> int:
         """$FGET (X9): the CL record number of the first record from ``first`` to
@@ -141,6 +166,8 @@ class MacroEngine(LookAheads):
                 frame = Frame(macro, params, record, {}, on_output=self._output_record)
                 self._run(frame)
                 return
+        if isinstance(record, Statement) and record.major in MODAL_COMMANDS:
+            self.last_statements[record.major] = _statement_key(record)
         self.run.builtin(record)
 
     def _output_record(self, frame: Frame) -> None:
@@ -289,8 +316,7 @@ class MacroEngine(LookAheads):
             if not judged(proceed):
                 return
             if not done:
-                done = True
-                builtin()
+                done = builtin() is not NOT_DONE
 
         self._running.add(event)
         try:
@@ -408,3 +434,14 @@ _SWITCH = {
     Kind.TAPE: "TAPMAC",
     Kind.DIAGNOSTIC: "DIAGMAC",
 }
+
+
+# the post-processor commands that set a state a repeat leaves as it is (a repeat is
+# "redundant", §5.9); one-shot commands (STOP, RAPID, a tool change, INSERT...) are never
+MODAL_COMMANDS = frozenset({"SPINDL", "COOLNT", "FEDRAT", "CUTCOM", "CYCLE", "TRANS", "CLAMP",
+                            "AIR", "MODE", "OPSKIP"})  # fmt: skip
+
+
+def _statement_key(statement: Statement) -> tuple[Any, ...]:
+    """What makes two statements the same command: their arguments and text."""
+    return (statement.args, statement.text)

@@ -27,12 +27,15 @@ from typing import TYPE_CHECKING, Any
 
 from gecent.core.absent import ABSENT
 from gecent.core.cl.records import Motion, MotionSubtype
-from gecent.core.errors import Diagnostic, NotYetSupported
+from gecent.core.errors import Diagnostic
 from gecent.core.families import HookPoint
 from gecent.core.macros.context import Frame
+from gecent.core.macros.cycle_switches import cycle_switches, feed_alone
+from gecent.core.macros.diagnostics import WARNING, comment_number, deliver
+from gecent.core.macros.helix import NORMAL_AXIS, helical_changed
 from gecent.core.macros.host import MacroHost
 from gecent.core.macros.macfun import MacfunContext, handled
-from gecent.core.macros.model import Kind, MacroError, MacroFailure, Phase
+from gecent.core.macros.model import NOT_DONE, Kind, MacroError, MacroFailure, Phase
 from gecent.core.macros.params import (
     CycleParams,
     DiagnosticParams,
@@ -41,11 +44,14 @@ from gecent.core.macros.params import (
     TapeParams,
 )
 from gecent.core.macros.searches import next_motion
+from gecent.core.motion.positioning import refuse_cycle_by_moves
 from gecent.core.output.block import TEXT_CODES, Block, Code
 from gecent.core.output.tape import tape_line
 
 if TYPE_CHECKING:
     from gecent.core.macros.engine import MacroEngine
+    from gecent.core.motion.cycles import Cycle
+    from gecent.core.motion.positioning import PositioningMotion
     from gecent.core.output.element import OutputElement
     from gecent.core.output.words import Word as RegisterWord
 
@@ -70,6 +76,11 @@ class EventHooks:
         if HookPoint.SLIDE_LIMITS in self.engine.macfuns:
             output.slide_limits.hook = self.slide_limits
 
+    def positioning_element(self, positioning: PositioningMotion) -> None:
+        """The cycle macros sit around each hole a positioning control drills (CYCLGP)."""
+        if self.engine.table.has(Kind.CYCLE):
+            positioning.hole_event = self.positioning_cycle
+
     def macfun(self, hook: HookPoint, **fields: Any) -> bool:
         """The machine's MACFUN at a hook point: True when it did the special sequence
         (RETURN = 1), so the caller skips the rest."""
@@ -80,6 +91,10 @@ class EventHooks:
         fields.setdefault("record", run.current_record)
         fields.setdefault("data", self.engine.macfun_data)
         return handled(handler(MacfunContext(hook, run, **fields)))
+
+    def has_macfun(self, hook: HookPoint) -> bool:
+        """Whether the machine's MACFUN answers at ``hook``."""
+        return hook in self.engine.macfuns
 
     def slide_limits(self, position: tuple[int, ...]) -> bool:
         """MCHCON 2: the machine tests its slide limits itself (TSTLIM's MACSRT call)."""
@@ -132,25 +147,34 @@ class EventHooks:
                 circle.centre = pending if subclass == 1.0 and not moved else None
             return bool(subclass != 0)
 
+        travel = params[19]
+
         def builtin() -> None:
-            if 19 in params.changed:
-                raise NotYetSupported("a motion macro's changed helical component ($P19)")
+            if 19 in params.changed and params.helical != travel:
+                try:
+                    helical_changed(self, record, params.helical, travel)
+                except MacroError as error:
+                    raise self._failure(Kind.MOTION, error, record) from None
+                return
             self._motion_builtin(record)
 
         engine.event(Kind.MOTION, params, record, builtin, proceed=goes)
+
+    def _failure(self, kind: Kind, error: MacroError, record: Any) -> MacroFailure:
+        """A value a macro left that the post cannot take: the macro's error, named."""
+        table = self.engine.table
+        macro = table.event(kind, Phase.STARTUP) or table.event(kind, Phase.EVENT)
+        name = macro.key if macro is not None else kind.value
+        return MacroFailure(f"macro {name}: {error}", getattr(record, "where", None))
 
     def _motion_builtin(self, record: Motion) -> None:
         """The post's motion, after the MACFUN FROM test (MCHCON 8) or thread sequence
         (MCHCON 12) where the machine has them."""
         run = self.run
-        if run.cycle is not None and record.subtype is not MotionSubtype.FROM:
-            if run.machine.number_option(1) != 0 and self.engine.table.has(Kind.CYCLE):
-                raise NotYetSupported(
-                    "cycle macros on a positioning machine (CYCLGP)", record.where
-                )
-            if Kind.CYCLE in self.engine._running:
-                self._plain_move(record)  # a cycle macro's own move is no hole (§5.6)
-                return
+        cycle_own_move = Kind.CYCLE in self.engine._running
+        if run.cycle is not None and record.subtype is not MotionSubtype.FROM and cycle_own_move:
+            self._plain_move(record)  # a cycle macro's own move is no hole (§5.6)
+            return
         macfuns = self.engine.macfuns
         if macfuns:
             hook = None
@@ -210,7 +234,8 @@ class EventHooks:
             params.set(13, centre)
             params.set(14, moved)
             params.set(18, ((start[u] - moved[u]) ** 2 + (start[v] - moved[v]) ** 2) ** 0.5)
-            params.set(19, 0.0)
+            # the helical component: the arc's travel along its axis (machine units)
+            params.set(19, machine[NORMAL_AXIS[circle.plane]] - start[NORMAL_AXIS[circle.plane]])
             params.set(23, 0.0)
         return params
 
@@ -243,20 +268,84 @@ class EventHooks:
         for number, value in values:
             params.set(number, value)
 
-        def builtin() -> None:
-            changed = params.changed & set(CYCLE_SWITCHES)
-            if changed:
-                what = ", ".join(f"$P{n} ({CYCLE_SWITCHES[n]})" for n in sorted(changed))
-                raise NotYetSupported(f"a cycle macro's changed {what}", record.where)
-            control_value = params.control
-            if control_value == -2:
-                raise NotYetSupported("a cycle macro's $P1 = -2 (the feed alone)", record.where)
-            if control_value == -1:
+        activating = bool(params.activating)
+
+        def builtin() -> object:
+            if params.control == -2:
+                feed_alone(run, record, params)
+                return NOT_DONE  # the cycle at the next OUTPUT, or none at the exit
+            if params.control == -1:
                 run.simulated_hole(record, at, hole)
-                return
+                return None
+            try:
+                switches = cycle_switches(params, activating)
+            except MacroError as error:
+                raise self._failure(Kind.CYCLE, error, record) from None
             levels = (float(params.clearance), float(params.depth), float(params.retract))
             moved = params.changed & {11, 13, 15}
-            control.hole(cycle, record.number, hole, first_z, levels if moved else None)
+            control.hole(cycle, record.number, hole, first_z, levels if moved else None,
+                         switches)  # fmt: skip
+            return None
+
+        self.engine.event(
+            Kind.CYCLE, params, record, builtin, proceed=_cycle_goes, then=_cycle_output
+        )
+
+    def positioning_cycle(
+        self,
+        record: Motion,
+        point: tuple[float, ...],
+        cycle: Cycle,
+        positioning: PositioningMotion,
+    ) -> None:
+        """A hole of a positioning control's cycle (CYCLGP, 001 L30095-30204): the cycle
+        macros around its blocks, with the same $P as on a contouring control, in the
+        machine frame the cycle block is measured in. $P1 left 0 skips the hole; -1 drills
+        it by positioning moves; $P11 and $P13 changed move the R plane and the bottom
+        (the block's R and Z); the output switches $P5, $P8, $P10, $P12 work on the cycle
+        block and the hole's F as on a contouring control; $P1 = -2 is the feed alone. The
+        control returns to the level the tool stands at ($P15): CYCLGP's block has no
+        register for another, nor for $P14 to force (docs/decisions.md, "Cycles: the last
+        forms")."""
+        run = self.run
+        translation = run.state.position.translation
+        plane, bottom, height = positioning.levels(point, cycle)
+        hole = (point[0], point[1], point[2])
+        machine_point = (*(hole[a] + translation[a] for a in range(3)), 0.0, 0.0, 0.0)
+        params = CycleParams()
+        values: tuple[tuple[int, Any], ...] = (
+            (1, 1.0), (2, hole), (3, machine_point), (4, cycle_type(cycle.kind,
+            bool(cycle.dwell))), (5, positioning.restates(point, cycle)), (6, 0), (8, True),
+            (9, run.state.feed.ipm), (10, True), (11, plane), (12, True), (13, bottom),
+            (14, True), (15, height), (16, 0), (17, ()), (18, 0), (19, 3.0), (20, False),
+        )  # fmt: skip
+        for number, value in values:
+            params.set(number, value)
+
+        activating = bool(params.activating)
+
+        def builtin() -> object:
+            if params.control == -2:
+                feed_alone(run, record, params)
+                return NOT_DONE  # the cycle at the next OUTPUT, or none at the exit
+            if params.control == -1:
+                refuse_cycle_by_moves(run.machine, cycle, record.where)
+                positioning.hole_by_moves(record, point, cycle)
+                return None
+            try:
+                switches = cycle_switches(params, activating)
+                if 15 in params.changed or switches.get("retract"):
+                    raise MacroError(
+                        "$P14/$P15 (retract plane) on a positioning machine: its control "
+                        "returns to the level the tool stands at, and CYCLGP's block holds "
+                        "G, Z and R only (001 L30164-30178)"
+                    )
+            except MacroError as error:
+                raise self._failure(Kind.CYCLE, error, record) from None
+            levels = (float(params.clearance), float(params.depth))
+            moved = params.changed & {11, 13}
+            positioning.hole(record, point, cycle, levels if moved else None, switches)
+            return None
 
         self.engine.event(
             Kind.CYCLE, params, record, builtin, proceed=_cycle_goes, then=_cycle_output
@@ -271,29 +360,24 @@ class EventHooks:
         count = engine._occurrences.get(diagnostic.text, 0) + 1
         engine._occurrences[diagnostic.text] = count
         params = DiagnosticParams()
-        for number, value in ((1, 1.0), (2, None), (3, 1.0), (4, count), (5, diagnostic.text)):
+        entry_number = comment_number(diagnostic.text)
+        for number, value in ((1, 1.0), (2, entry_number), (3, WARNING), (4, count),
+                              (5, diagnostic.text)):  # fmt: skip
             params.set(number, value)
 
         def emit(frame: Frame) -> None:
-            numbered(params)
+            deliver(run, params, entry_number, diagnostic.where)
             params.changed.clear()
-            run.warn_builtin(Diagnostic(str(params.message), diagnostic.where))
-
-        def numbered(params: DiagnosticParams) -> None:
-            if params.changed & {2, 3}:
-                raise NotYetSupported(
-                    "a diagnostic macro's changed number or severity ($P2, $P3): gecent's "
-                    "diagnostics have no numbers yet",
-                    diagnostic.where,
-                )
 
         frame = engine.single(Kind.DIAGNOSTIC, params, run.current_record, emit)
         if frame is None:
             run.warn_builtin(diagnostic)
             return
-        numbered(params)
         if params.flag != 0 and (frame.outputs == 0 or params.changed):
-            run.warn_builtin(Diagnostic(str(params.message), diagnostic.where))
+            try:
+                deliver(run, params, entry_number, diagnostic.where)
+            except MacroError as error:
+                raise self._failure(Kind.DIAGNOSTIC, error, run.current_record) from None
 
     def tape(self, block: Block) -> None:
         """§5.11: each punched block goes through the tape macro before tape and listing."""
@@ -446,8 +530,3 @@ def cycle_type(kind: str, dwell: bool) -> float:
     THRU 13; gecent's stand-ins (CSINK, REAM, BRKCHP) arrive as DRILL, BORE, DEEP."""
     plain, dwelling = CYCLE_TYPES.get(kind, (1.0, 2.0))
     return dwelling if dwell else plain
-
-
-# the output switches of §5.6 whose effect is not built (a change stops the run, named)
-CYCLE_SWITCHES = {5: "activation", 8: "feed", 10: "clearance plane", 12: "depth",
-                  14: "retract plane", 20: "back-bore plane", 21: "back-bore plane"}  # fmt: skip

@@ -8,11 +8,11 @@ from collections.abc import Callable
 from typing import Any
 
 from gecent.core.cl.records import Statement
-from gecent.core.errors import InputError, NotYetSupported
+from gecent.core.errors import InputError
 from gecent.core.macros.context import Frame, LookaheadFlags
 from gecent.core.macros.host import MacroHost
 from gecent.core.macros.lookahead import look_ahead
-from gecent.core.macros.model import Kind, Macro, MacroError, Phase
+from gecent.core.macros.model import Kind, Macro, MacroError, MacroFailure, Phase
 from gecent.core.macros.operations import NOT_PROCESSED, Operations
 from gecent.core.macros.params import OperationEventParams
 from gecent.core.macros.searches import (
@@ -42,6 +42,7 @@ class LookAheads:
     operations: Operations
     globals: dict[str, Any]
     flags: LookaheadFlags
+    guard: tuple[int, int] | None
 
     # the engine's own (core/macros/engine.py)
     enabled: Callable[[Kind], bool]
@@ -147,11 +148,24 @@ class LookAheads:
                                   (4, info.P2.CLN), (5, 1 if info.P1.CLN else 0)):  # fmt: skip
                 params.set(number, value)
             self.single(Kind.OPERATION_EVENT, params, statement, _no_output)
-            if params.changed & {3, 4}:
-                raise NotYetSupported(
-                    "the operation-event macro's redundancy guard ($P3, $P4)", statement.where
-                )
+            self.guard = _guard(params, statement)
         self.operations.operation_type(resolved, args)
+
+
+def _guard(params: OperationEventParams, statement: Statement) -> tuple[int, int] | None:
+    """The redundancy guard's CL records, $P3 to $P4 as the OE macro left them (§5.9):
+    $P4 = 0 disables it, a larger $P4 carries it into the cut."""
+    if params.cut_record is None:
+        return None  # no cut ahead (another OPTYPE or FINI first): nothing to guard
+    try:
+        first, last = int(params.first_record), int(params.cut_record)
+    except (TypeError, ValueError):
+        raise MacroFailure(
+            "the operation-event macro's $P3 and $P4 are CL record numbers, not "
+            f"{params.first_record!r} and {params.cut_record!r}",
+            statement.where,
+        ) from None
+    return None if last == 0 else (first, last)
 
 
 def _no_output(frame: Frame) -> None:

@@ -16,7 +16,13 @@ MCHCON       called                                      HANDLED skips
 8 FROM       at each FROM record                          the FROM's processing
 12 THREAD    at each motion under THREAD                  the thread move
 2 LIMITS     each point tested against the slide limits   the standard test
+FEED_RANGE   FEDRAT's feed range change, option 93 < 0    (nothing: the dwell is its own)
 ===========  ==========================================  =================================
+
+FEED_RANGE (MCHCON not legible, 001 L27406-27568) gets ``values`` = (the new range, the
+dwell option 93 asks, in seconds); "dwell is output by a special machine function
+subroutine" (001 L25507-25511), so the handler outputs it (``MacfunContext.output``), the
+range's M code still waiting for the next block.
 
 Spindle type 7's S-code computation (MACSRT from SPTYPE) is called by the spindle element
 itself (core/spindle_macfun.py).
@@ -46,6 +52,7 @@ ENGINE_POINTS = (
     HookPoint.FROM,
     HookPoint.THREAD,
     HookPoint.SLIDE_LIMITS,
+    HookPoint.FEED_RANGE,
 )
 
 

@@ -69,6 +69,9 @@ class MacroFailure(InputError):
     message names the macro; the position is the record it was working on."""
 
 
+NOT_DONE = "not done"  # a built-in action that has not yet done its event (engine.Action)
+
+
 class TerminateMacro(BaseException):
     """TERMAC: leave the current macro (caught by the engine). A BaseException, so a
     macro's own ``except Exception`` cannot swallow it."""

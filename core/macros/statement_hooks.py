@@ -9,10 +9,10 @@ from typing import Any
 
 from gecent.core.cl.records import Statement, Word
 from gecent.core.cl.vocabulary import vocabulary
-from gecent.core.errors import NotYetSupported
+from gecent.core.errors import Diagnostic
 from gecent.core.families import HookPoint
 from gecent.core.macros.host import MacroHost
-from gecent.core.macros.model import Kind, Phase
+from gecent.core.macros.model import Kind, MacroError, MacroFailure, Phase
 from gecent.core.macros.params import LcsParams, NoParams, ToolChangeParams
 
 
@@ -22,6 +22,7 @@ def tool_change(run: MacroHost, statement: Statement) -> None:
     engine = run.macros
     assert engine is not None
     params = _tool_params(statement)
+    entry = dict(params.items())  # the values the macro saw first
     if engine.search is not None:
         engine.search.tool_change(run, params.tool_id)
     table = engine.table
@@ -33,7 +34,10 @@ def tool_change(run: MacroHost, statement: Statement) -> None:
     original = run.builtin_statement(statement.major)
 
     def builtin() -> None:
-        changed = _tool_statement(statement, params)
+        try:
+            changed = _tool_statement(statement, params, entry)
+        except MacroError as error:
+            raise _failure(engine, kind, error, statement) from None
         fields = {"record": changed, "values": changed.numbers(), "words": changed.words()}
         hooks = engine.hooks
         if not hooks.macfun(HookPoint.TOOLNO, **fields) and not hooks.macfun(
@@ -44,6 +48,13 @@ def tool_change(run: MacroHost, statement: Statement) -> None:
         engine.operations.tool_change(params.tool_id)  # a new operation (§9.1)
 
     engine.event(kind, params, statement, builtin)
+
+
+def _failure(engine: Any, kind: Kind, error: MacroError, record: Statement) -> MacroFailure:
+    """A value the startup macro left that the post cannot take: the macro's error, named."""
+    macro = engine.table.event(kind, Phase.STARTUP)
+    name = macro.key if macro is not None else kind.value
+    return MacroFailure(f"macro {name}: {error}", record.where)
 
 
 def _tool_params(statement: Statement) -> ToolChangeParams:
@@ -86,29 +97,60 @@ def _after_three(args: tuple[Any, ...], name: str) -> tuple[float | None, ...]:
     return (None, None, None)
 
 
-def _tool_statement(statement: Statement, params: ToolChangeParams) -> Statement:
-    """The statement with what the startup macro changed: the tool ($P9, or $P1 when it
-    alone changed), the offset ($P5), the length ($P6) and the turn ($P4)."""
-    changed = params.changed
-    if not changed & {1, 4, 5, 6, 9}:
+# what the post's own tool change takes from a changed $P (core/tool.py): the tool, the
+# turn of the drum, OFSETL, LENGTH; on TURRET also NOW/NEXT and FRONT/REAR
+_TAKEN = frozenset({1, 4, 5, 6, 9})
+_TURRET_TAKEN = frozenset({2, 18})
+# the values with nothing in the post's tool change to receive them: a change is refused
+_NOT_TAKEN = {3: "a manual or automatic change", 7: "a gripper size", 8: "START",
+              10: "RETAIN", 11: "DIAMET", 12: "TIMES", 13: "SETOOL", 14: "SETOOL",
+              15: "SETOOL", 16: "ATANGL", 17: "SETANG", 19: "TURN/MILL",
+              20: "a tool name"}  # fmt: skip
+
+
+def _tool_statement(
+    statement: Statement, params: ToolChangeParams, entry: dict[int, Any]
+) -> Statement:
+    """The statement with what the startup macro changed (§5.5: the changed $P go to the
+    post's tool change): the tool ($P9, or $P1 when it alone changed), the offset ($P5),
+    the length ($P6), the turn ($P4), and on TURRET the correction's NOW/NEXT ($P2) and the
+    turret FRONT/REAR ($P18). A value written back unchanged is no change."""
+    changed = {n for n in params.changed if params[n] != entry.get(n)}
+    if not changed:
         return statement
-    if changed - {1, 4, 5, 6, 9}:
-        numbers = ", ".join(f"$P{n}" for n in sorted(changed - {1, 4, 5, 6, 9}))
-        raise NotYetSupported(f"a tool change macro's changed {numbers}", statement.where)
+    turret = statement.major == "TURRET"
+    taken = _TAKEN | (_TURRET_TAKEN if turret else frozenset())
+    refused = sorted(changed - taken)
+    if refused:
+        number = refused[0]
+        what = _NOT_TAKEN.get(number) or (
+            "NOW/NEXT (TURRET only)" if number == 2 else
+            "FRONT/REAR (TURRET only)" if number == 18 else "a head (gecent has no head changer)"
+        )  # fmt: skip
+        raise MacroError(
+            f"$P{number} ({ToolChangeParams.FIELDS[number].name}) changed to "
+            f"{params[number]!r}: {statement.major} on this post has no {what}; the post's "
+            f"tool change takes $P{', $P'.join(str(n) for n in sorted(taken))}"
+        )
     args = list(statement.args)
     tool = params.tool_id if 9 in changed or 1 not in changed else params.pocket
-    if statement.major == "TURRET" and 1 in changed and 9 in changed:
+    if turret and 1 in changed and 9 in changed:
         args[1:2] = [float(params.pocket)]
     args[0] = float(tool)
     for number, name in ((5, "OFSETL"), (6, "LENGTH")):
         if number in changed:
             args = _set_after(args, name, params[number])
-    if 4 in changed:
-        args = [a for a in args if not (isinstance(a, Word) and a.name in ("CLW", "CCLW"))]
-        if params.drum in (1, 3):
-            args.append(_word_of("CLW"))
-        elif params.drum in (2, 4):
-            args.append(_word_of("CCLW"))
+    for number, words in ((4, {1: "CLW", 3: "CLW", 2: "CCLW", 4: "CCLW"}),
+                          (2, {1: "NOW", 2: "NEXT"}), (18, {1: "FRONT", 2: "REAR"})):  # fmt: skip
+        if number in changed:
+            names = set(words.values())
+            args = [a for a in args if not (isinstance(a, Word) and a.name in names)]
+            word = words.get(params[number]) if params[number] is not None else None
+            if params[number] is not None and word is None:
+                raise MacroError(f"$P{number} takes {', '.join(map(str, words))}, not "
+                                 f"{params[number]!r}")  # fmt: skip
+            if word is not None:
+                args.append(_word_of(word))
     return Statement(statement.file, statement.line, statement.number, statement.major,
                      statement.code, tuple(args), statement.text)  # fmt: skip
 
@@ -128,8 +170,14 @@ def _set_after(args: list[Any], name: str, value: Any) -> list[Any]:
     return [*args, _word_of(name), float(value)]
 
 
+NO_LCS_MOTION = -1.0  # $LCSMTN -1: "LCS generated motions are not available"
+LCS_MOTION_REFUSED = "LCS MOTION NOT AVAILABLE - TRANS ADJUSTS THE FRAME ONLY"
+
+
 def trans(run: MacroHost, statement: Statement) -> None:
-    """TRANS with the LCS macros around it (§5.8): gecent's immediate LCS change."""
+    """TRANS with the LCS macros around it (§5.8): gecent's immediate LCS change. Its
+    $P21 is -1: a translation generates no motion (a macro's other value is warned about
+    and the frame is adjusted alone)."""
     engine = run.macros
     assert engine is not None
     original = run.builtin_statement("TRANS")
@@ -139,14 +187,16 @@ def trans(run: MacroHost, statement: Statement) -> None:
     for number, value in ((1, 1.0), (2, 10.0 if any(translation) else 0.0), (3, 0.0),
                           (4, (1.0, 0.0, 0.0, translation[0], 0.0, 1.0, 0.0, translation[1],
                                0.0, 0.0, 1.0, translation[2])),
-                          (5, 0.0), (9, translation), (21, 0.0)):  # fmt: skip
+                          (5, 0.0), (9, translation), (21, NO_LCS_MOTION)):  # fmt: skip
         params.set(number, value)
 
     def builtin() -> None:
-        if 21 in params.changed:
-            raise NotYetSupported(
-                "an LCS macro's motion ($P21): TRANS moves nothing", statement.where
-            )
+        if params.motion != NO_LCS_MOTION:
+            # $P21 = -1: TRANS only translates, it never turns a rotary axis, so no motion
+            # can be asked of it; setting another value gives a diagnostic (004 L512-531)
+            run.warn(Diagnostic(f"{LCS_MOTION_REFUSED} ($P21 = {params.motion!r})",
+                                statement.where))  # fmt: skip
+            params.set(21, NO_LCS_MOTION)
         original(run, statement)
 
     engine.event(Kind.LCS, params, statement, builtin)

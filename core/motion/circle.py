@@ -28,7 +28,7 @@ from math import hypot, pi, tau
 
 from gecent.core.absent import ABSENT
 from gecent.core.cl.records import Circle, Motion, MotionSubtype
-from gecent.core.errors import Diagnostic, FatalError, InputError, NotYetSupported
+from gecent.core.errors import Diagnostic, FatalError, InputError
 from gecent.core.machine.shuffle import cell_map
 from gecent.core.motion.arc_pieces import Arc, ArcPieces
 from gecent.core.motion.gcode import circular_departure
@@ -83,6 +83,7 @@ class CircularMotion(ArcPieces):
         self.exact_centre: tuple[float, float, float] = (0.0, 0.0, 0.0)  # the record's, unrounded
         self.axis_sense = 0.0  # the circle axis component along the plane normal
         self.tilted = False  # the axis is along none of X, Y, Z
+        self.circle_axis: tuple[float, float, float] = (0.0, 0.0, 1.0)  # the record's, unit
         self._reference = 0.0
         self.centre_words = int(machine.number_option(252))  # CentreWords
         self.whole = machine.number_option(253) == 1
@@ -115,6 +116,8 @@ class CircularMotion(ArcPieces):
             raise InputError(f"CIRCLE radius must be more than 0, found {radius:g}", record.where)
         components = sum(abs(c) > self.epsilon for c in (i, j, k))
         self.tilted = components > 1
+        length = (i * i + j * j + k * k) ** 0.5
+        self.circle_axis = (i / length, j / length, k / length)
         self.exact_centre = (x, y, z)
         self.centre = (
             round_to_step(x, self.step),
@@ -129,18 +132,15 @@ class CircularMotion(ArcPieces):
         centre, self.centre = self.centre, None  # CIRFLG is spent by this motion either way
         if centre is None or record.subtype is not MotionSubtype.GOTO:
             return False
-        if self.tilted:
-            raise NotYetSupported("a circle about an axis along none of X, Y, Z", record.where)
         if self.state.feed.rapid_ipm:
             return False  # a rapid move is never an arc (decision, PROCQD reads FRAPID)
-        if self.state.sfm.active and self.whole:
-            # SFM cuts an arc into pieces; a control taking whole arcs (option 253) would
-            # need each piece as an arc of its own with option 252's centre words
-            raise NotYetSupported("SFM on a circle in one block (option 253)", record.where)
         points = [p[:3] for p in record.points]
         u, v, normal = PLANES[self.plane]
         if self.machine.number_option(28) != 1:
             return False
+        if self.tilted:  # in a plane of none of the control's: chords (arc_pieces.py)
+            self.arc = self._begin_tilted(record, self.circle_axis)
+            return self.arc is not None
         position = self.state.position
         self._reference = points[0][normal]
         if not self._planar(points, normal):
@@ -225,14 +225,16 @@ class CircularMotion(ArcPieces):
         points.append(arc.end)
         code = Code(int((10 + self.plane) * (-1 if ccw else 1)))
         try:
+            if arc.axis is not None:
+                self._tilted_chords(arc)
+                return
             if self.chord_tolerance > 0 or (arc.helix and not self.helical):
-                if self.state.sfm.active:
-                    raise NotYetSupported(
-                        "SFM on an arc cut into chords (option 262, a helix)", arc.record.where
-                    )
-                self._chords(arc, first, last)
+                self._chords(arc, first, last)  # (under SFM, each chord cut as a line)
                 return
             self._plane_block(arc.record)
+            if self.whole and self.state.sfm.active:
+                self._surface_whole(arc, code)  # whole arcs between the shift points
+                return
             if self.whole:
                 self._whole(arc, code, first, last)
                 return

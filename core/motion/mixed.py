@@ -18,6 +18,9 @@ gecent's reading (docs/decisions.md, "h6"):
   cycle G against an interpolation G), so a control switching ways is never left in the
   other's G: the G word is output whenever it changes, as every G is.
 
+Option 140's Z inversion and option 86 < 0's tool length move the positioning control's
+Z frame only (enter_way): the departures are increments of the same slide.
+
 The positioning control's held words (option 40's repeated X and Y, the cycle block's Z
 and R) mean nothing once contouring has moved the slides, so they are forgotten then.
 """
@@ -25,35 +28,62 @@ and R) mean nothing once contouring has moved the slides, so they are forgotten 
 from __future__ import annotations
 
 from gecent.core.cl.records import Motion, MotionSubtype
-from gecent.core.errors import NotYetSupported
 from gecent.core.feed.rapid import MODAL
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.motion.positioning import PositioningMotion
+from gecent.core.motion.rounding import to_steps
 from gecent.core.state import PostState
 
 MIXED_CONTROL = 3.0  # option 1
+Z = 2
 
 
 def is_mixed(machine: MachineDefinition) -> bool:
     return machine.number_option(1) == MIXED_CONTROL
 
 
-def check_mixed_machine(machine: MachineDefinition, record: Motion) -> None:
-    """What one position shared by both ways cannot hold yet: option 140's Z inversion and
-    option 86 < 0's tool-length Z move the positioning control's Z frame by a distance the
-    contouring departures would have to carry too; the manual does not say how the 7500
-    took it (001 L26049-26062, L25406-25434)."""
-    if machine.number_option(140) != 0:
-        raise NotYetSupported(
-            "option 140 (positioning Z inversion) on the 7500's mixed control (option 1 = 3)",
-            record.where,
-        )
-    if machine.number_option(86) < 0:
-        raise NotYetSupported(
-            "option 86 < 0 (positioning Z tool-length adjustment) on the 7500's mixed control "
-            "(option 1 = 3)",
-            record.where,
-        )
+def enter_way(state: PostState, positioning: PositioningMotion, way: bool) -> None:
+    """The present point put in the Z frame of the way the next move goes (``way`` True:
+    the positioning control's). Its Z is the contouring control's (the CL point plus
+    TRANS, as every departure counts) or the positioning control's, moved by option 140's
+    inversion and, with option 86 < 0, by the tool length (POSMOV, 001 L19870-19876,
+    L34956-34961, L26049-26062, L25406-25434).
+
+    The 7500 has one Z slide: a departure is an increment of it and carries no frame, so
+    the shift belongs to the absolute positions only. When the control switches ways, the
+    present point is re-expressed in the other way's frame by the shift in force then:
+    the positioning way's Z is the tip plus the shift (the spindle nose above the tip, the
+    inversion's datum), the contouring way's the tip of the tool now in the spindle, so
+    a tool changed under positioning leaves the next departure counted from that tool's
+    tip (docs/decisions.md, h9)."""
+    if way == positioning.in_own_frame:
+        return
+    positioning.in_own_frame = way
+    shift = positioning_z_shift(state)
+    if shift:
+        _move_frame(state, shift if way else -shift)
+
+
+def positioning_z_shift(state: PostState) -> float:
+    """POSMOV's Z adjustment (as core/motion/positioning.py makes it): less option 140's
+    inversion, plus the tool length under option 86 < 0."""
+    machine = state.machine
+    length = state.tool.length if machine.number_option(86) < 0 else None
+    return -machine.number_option(140) + (length or 0.0)
+
+
+def _move_frame(state: PostState, shift: float) -> None:
+    """The present and previous point, part and steps, moved along Z by ``shift``; the
+    steps by the grid's own rounding of the new Z, so the positions stay on the grid."""
+    step = state.machine.number_option(14)
+    position = state.position
+    for part, steps in (
+        (position.present_part, position.present),
+        (position.previous_part, position.previous),
+    ):
+        moved = part[Z] + shift
+        steps[Z] += to_steps(moved, step) - to_steps(part[Z], step)
+        part[Z] = moved
 
 
 def goes_positioning(state: PostState, record: Motion, cycle_in_force: bool) -> bool:

@@ -27,7 +27,7 @@ from math import acos, ceil, degrees, isfinite, radians, sqrt
 
 import numpy as np
 from gecent.core.cl.records import Motion, MotionSubtype
-from gecent.core.errors import Diagnostic, FatalError, InputError, NotYetSupported, SourcePosition
+from gecent.core.errors import Diagnostic, FatalError, InputError, SourcePosition
 from gecent.core.feed.limits import HEAD_CLASSES
 from gecent.core.machine.definition import ROTARY_CELLS
 from gecent.core.motion.gcode import RotaryCodes
@@ -467,23 +467,18 @@ class MultiaxisMotion:
         FEDLIM counts a rotary axis (001 L12225-12300)."""
         machine = self.state.machine
         longest = sqrt(sum((s * self.step) ** 2 for s in slides))
+        turned = [abs(t) * self.rotary_step / self.per_degree for t in turns]
         if self.chain is not None:
             # the axes' arcs at their radii: the slides' travel is the machine's, not the
             # cut's (under the control's tool centre point the slides stand)
-            return self.chain.swing(
-                [t * self.rotary_step / self.per_degree for t in turns],
-                machine.number_option(112),
-                machine.number_option(128),
-            )
-        for cell, steps in zip(self.cells, turns, strict=True):
-            radius = machine.number_option(128 if cell == 6 else 112)
-            degrees = abs(steps) * self.rotary_step / self.per_degree
-            longest = max(longest, radians(degrees) * radius)
-        if longest <= 0.0:
-            raise NotYetSupported(
-                "a turn of the tool alone on a machine without its radius (options 112, 128)"
-            )
-        return longest
+            radii = machine.number_option(112), machine.number_option(128)
+            longest = self.chain.swing(turned, *radii)
+        else:
+            for cell, degrees in zip(self.cells, turned, strict=True):
+                radius = machine.number_option(128 if cell == 6 else 112)
+                longest = max(longest, radians(degrees) * radius)
+        # options 112, 128 = 0: F is degrees per minute, as a G94 control reads it (h8)
+        return longest if longest > 0.0 else max(turned, default=0.0)
 
     def _pole(self, record: Motion, start: tuple[float, ...], before: list[int]) -> None:
         """A move whose tool axis passes near the pole (along the axis whose angle it then

@@ -42,9 +42,9 @@ from __future__ import annotations
 from math import acos, atan2, ceil, cos, hypot, pi, sin, sqrt, tau
 
 import numpy as np
-from gecent.core.errors import Diagnostic, FatalError, InputError, NotYetSupported
+from gecent.core.errors import Diagnostic, FatalError, InputError
 from gecent.core.motion.arc_pieces import Arc
-from gecent.core.motion.circle import PLANES, CircularMotion
+from gecent.core.motion.circle import PLANES, CentreWords, CircularMotion
 from gecent.core.motion.gcode import circular_departure
 from gecent.core.motion.multiaxis import NOT_UNIT, UNIT_TOLERANCE, MultiaxisMotion, PartPoint
 from gecent.core.motion.quadrants import arc_sweep, goes_linear, quadrant_crossings
@@ -102,12 +102,10 @@ class MultiaxisCircle:
 
     def _finish(self, arc: Arc) -> None:
         machine = self.motion.state.machine
-        if machine.number_option(252) or machine.number_option(253) == 1:
-            raise NotYetSupported(
-                "a multiaxis circle on a control with modern arc words (options 252, 253)",
-                arc.record.where,
-            )
         self._arc = arc
+        if arc.axis is not None:
+            self._tilted(arc)
+            return
         position = self.motion.state.position
         start = position.previous_part
         axis = (start[3], start[4], start[5])
@@ -125,6 +123,19 @@ class MultiaxisCircle:
             return
         self._chords()
         self.motion.tool_axis = self._axes[1]
+
+    def _tilted(self, arc: Arc) -> None:
+        """A circle about a tilted axis: the three-axis circle's chords in its own plane
+        (core/motion/arc_pieces.py), each a straight multiaxis move, the tool axis slerped
+        by the fraction of the arc."""
+        start = self.motion.state.position.previous_part
+        first = (start[3], start[4], start[5])
+        last = self._end_axis(arc, first)
+        tx, ty, tz = self.motion.state.position.translation
+        for (x, y, z), fraction in self.circle._tilted_path(arc):
+            i, j, k = slerp(first, last, fraction)
+            self.motion.goline(arc.record, (x - tx, y - ty, z - tz, i, j, k))
+        self.motion.tool_axis = last
 
     def _end_axis(self, arc: Arc, start: Axis) -> Axis:
         """The tool axis of the circle's last CL point (FROM5's check), or the one in force."""
@@ -263,7 +274,9 @@ class MultiaxisCircle:
             ((atan2(dv, du) - begin) * sense) % tau / sweep
             for du, dv in quadrant_crossings(first, _ending(first, last, sweep), clockwise)
         ]
-        corners = [*fractions, 1.0]
+        # a control taking whole arcs (option 253) needs no quadrant points: one block,
+        # cut only under ROTMAX
+        corners = [1.0] if self.circle.whole else [*fractions, 1.0]
         corners = self._under_rotmax(corners, start, end)
         code = Code((10 + plane) * (1 if clockwise else -1))
         self.circle.select_plane(plane, self._arc.record.number)
@@ -292,7 +305,8 @@ class MultiaxisCircle:
             if not any(departures) and not any(turns):
                 previous_offset = offset
                 continue
-            straight = goes_linear(
+            # PROCQD's special cases are the Mark Century's; a whole arc is always an arc
+            straight = not self.circle.whole and goes_linear(
                 index, len(corners), (departures[u], departures[v]), previous_offset, last
             )
             block = Block.motion(
@@ -304,14 +318,16 @@ class MultiaxisCircle:
             )
             for cell, steps in zip(motion.cells, turns, strict=True):
                 block.cells[cell] = steps * motion.rotary_step
+            block.angles = tuple(rotary)  # (absolute output, option 251: the angles reached)
             if straight:
                 before = position.previous_part
                 block.feed_length = sqrt(sum((part[a] - before[a]) ** 2 for a in range(3)))
             else:
-                for axis in (u, v):
-                    block.cells[8 + axis] = abs(centre_steps[axis] - position.previous[axis]) * step
+                self._centre_words(block, centre_steps, (u, v))
                 block.radius = radius
                 theta = (fraction - previous_fraction) * sweep  # this block's sweep (radians)
+                if self.circle.whole:
+                    block.sweep = theta  # (the cutting time of a whole arc)
                 for cell, steps in zip(motion.cells, turns, strict=True):
                     if steps and cell in constants and theta > 0:
                         block.cells[constants[cell]] = abs(steps) * motion.rotary_step / theta
@@ -328,6 +344,22 @@ class MultiaxisCircle:
             previous_offset = offset
         motion.singular = singular
         motion.tool_axis = self._axes[1]
+
+    def _centre_words(self, block: Block, centre: list[int], plane: tuple[int, int]) -> None:
+        """I, J, K of the machine circle by option 252: the manual's unsigned offsets from
+        the block's start (0), signed offsets (1; also 3, as a circular block of the
+        quadrant split takes them: an R cannot carry the rotary axes' sweep, decision),
+        or the absolute centre (2)."""
+        previous = self.motion.state.position.previous
+        words = self.circle.centre_words
+        for axis in plane:
+            if words == CentreWords.ABSOLUTE:
+                steps = centre[axis]
+            elif words:
+                steps = centre[axis] - previous[axis]
+            else:
+                steps = abs(centre[axis] - previous[axis])
+            block.cells[8 + axis] = steps * self.step
 
     def _constant_cells(self) -> dict[int, int]:
         """The rotary cells whose supplementary constant the machine has a register for:

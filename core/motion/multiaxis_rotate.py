@@ -29,7 +29,7 @@ from math import radians
 
 import numpy as np
 from gecent.core.cl.records import Motion, MotionSubtype, Statement, Word
-from gecent.core.errors import Diagnostic, InputError, NotYetSupported
+from gecent.core.errors import Diagnostic, InputError
 from gecent.core.motion.multiaxis import MultiaxisMotion
 from gecent.core.motion.rotary import _parse, normalise, rotary_move
 from gecent.core.motion.segments import segment_count, segment_place, segments
@@ -43,10 +43,6 @@ def rotate(motion: MultiaxisMotion, statement: Statement) -> None:
     """ROTABL and ROTABI for one ROTATE statement on a multiaxis machine."""
     state = motion.state
     machine = state.machine
-    if machine.number_option(251) == 1:
-        raise NotYetSupported(
-            "ROTATE on a multiaxis machine with absolute output (option 251)", statement.where
-        )
     words = [a.name for a in statement.args if isinstance(a, Word)]
     rotref = "ROTREF" in words
     plain = replace(
@@ -59,6 +55,10 @@ def rotate(motion: MultiaxisMotion, statement: Statement) -> None:
     if not tracked and (absolute or rotref):
         motion.warn(Diagnostic(UNTRACKED, statement.where))
         tracked = True  # "proceeds as if the option = 1" (001 L24754-24757)
+    if motion.modern_absolute:
+        # an angle word under G90 (option 251 = 1) is where the table is: an untracked
+        # index would be turned back by the next move's angle (docs/decisions.md, h8)
+        tracked = True
     clw_increases = machine.number_option(117) >= 0
     move = rotary_move(
         normalise(motion.angles[index]),
@@ -101,14 +101,42 @@ def _rotary_blocks(
     motion: MultiaxisMotion, statement: Statement, index: int, departure: int
 ) -> None:
     """ROTOUT: the rotary departure (rotary steps) as CODE -2 blocks, segmented equally
-    under ROTMAX (option 111)."""
+    under ROTMAX (option 111); under absolute output, moves of the rotary axis alone."""
     cell = motion.cells[index]
     count = segment_count([departure], [motion.rotmax])
     pieces = [piece[0] for piece in segments([departure], count)]
+    if motion.modern_absolute:
+        _absolute_turn(motion, statement, index, pieces)
+        return
     for number, steps in enumerate(pieces):
         block = Block(Code.ROTARY_INCREMENTAL, statement.number)
         block.cells[cell] = steps * motion.rotary_step
         block.rotary = (cell, abs(steps * motion.rotary_step) / motion.per_degree)
+        block.segment = segment_place(number, count)
+        motion.emit(block)
+
+
+def _absolute_turn(
+    motion: MultiaxisMotion, statement: Statement, index: int, pieces: list[int]
+) -> None:
+    """The turn on a control of absolute words (option 251 = 1): each ROTMAX piece a feed
+    move of the rotary axis alone to the angle it reaches (the slides stated only where
+    the control is not at them yet), timed as GOLINE times a turn of the tool alone (the
+    arc at option 112 or 128, G93 on a five-axis machine by data)."""
+    position = motion.state.position
+    angles = list(motion.rotary_previous)
+    count = len(pieces)
+    for number, steps in enumerate(pieces):
+        angles[index] += steps
+        turns = [0] * len(angles)
+        turns[index] = steps
+        block = Block.motion(
+            Code.LINEAR, statement.number, (0, 0, 0), tuple(position.previous[:3]), motion.step
+        )
+        block.cells[motion.cells[index]] = steps * motion.rotary_step
+        block.angles = tuple(angles)
+        block.inverse_time = motion.chain is not None
+        block.feed_length = motion._turn_length(turns, [0, 0, 0])
         block.segment = segment_place(number, count)
         motion.emit(block)
 

@@ -26,16 +26,23 @@ register (REGFOR(16) = 0) RAPIDP simulates it: the R distance is a rapid Z move 
 of its own, and the cycle block's Z is the rest of the plunge. A cycle whose G code the
 control lacks is simulated the same way, whole: positioning moves across, down at rapid to
 R, at feed to the bottom and back (docs/decisions.md, "Options 80, 222 and positioning
-cycles").
+cycles"), with the expansion's dwell blocks and spindle M codes on the way: TAP out with the
+spindle reversed, DRAG and MANUAL with the spindle (and program) stopped at the bottom
+(TABLEG 85, 91-95, 001 L22875-22977; core/motion/cycles.py).
+
+Under the machine's cycle macros (spec 09 §5.6) each hole the control drills goes through
+:attr:`PositioningMotion.hole_event` (core/macros/events.py), which may skip it, drill it by
+moves or move its R plane and bottom (:meth:`PositioningMotion.hole`).
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable
+from dataclasses import replace
 
 from gecent.core.absent import ABSENT, Absent
 from gecent.core.cl.records import Motion, MotionSubtype
-from gecent.core.errors import Diagnostic, InputError, NotYetSupported, SourcePosition
+from gecent.core.errors import Diagnostic, InputError, SourcePosition
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.motion.cycles import CYCLE_TYPES, Cycle, cycle_legs
 from gecent.core.motion.guard import check_segments
@@ -44,6 +51,8 @@ from gecent.core.motion.rounding import to_steps
 from gecent.core.output.block import Block, Code
 from gecent.core.state import PostState
 
+# a hole under the cycle macros: (record, point, cycle, this element)
+HoleEvent = Callable[[Motion, tuple[float, ...], Cycle, "PositioningMotion"], None]
 NEGATIVE_Z = "Z IS BELOW ZERO AFTER THE OPTION 140 ADJUSTMENT"  # comment 66 (text lost)
 X, Y, Z = 0, 1, 2
 # SET12: MODPOS -> TABLEG location (chart L22710-22714, L22805-22854; decisions.md)
@@ -51,8 +60,6 @@ MODE_G = {1: 52, 2: 53, 3: 54}  # FINE (backlash takeup), NOBACK (none), COARSE
 CORNER_MILLING_G = {1: 61, 2: 62}  # CORMIL, by the feed range IFDRNG
 TRAVERSE_G, TRAVERSE_IPR_G = 58, 63  # TRAV: traverse to feed without a stop, IPM or IPR
 MODE_NAMES = {1: "FINE", 2: "NOBACK", 3: "COARSE", 4: "CORMIL"}
-# the ways out of a hole that need M codes on the way (TAP, DRAG, MANUAL): not by moves here
-UNBUILT_WAYS = ("tap", "drag", "manual")
 
 
 def mode_g_location(state: PostState) -> int | None:
@@ -90,21 +97,19 @@ def refuse_cycle_by_moves(
     machine: MachineDefinition, cycle: Cycle, where: SourcePosition | None
 ) -> None:
     """CYCLE on a positioning machine whose control lacks the cycle's G code (TABLEG
-    82-90): the hole is drilled by positioning moves, which needs Z on tape (option 130 =
-    +1 or -1). The forms that dwell or turn the spindle by M codes on the way are not
-    built by moves here."""
+    82-90), or a hole a cycle macro has made by moves ($P1 = -1): the hole is drilled by
+    positioning moves, which needs Z on tape (option 130 = +1 or -1)."""
     cell = CYCLE_TYPES[cycle.kind][1]
     if machine.number_option(130) == 0:
-        raise InputError(
-            f"CYCLE/{cycle.kind} on a positioning machine without its G code TABLEG({cell}): "
-            f"machine {machine.label} puts no Z on tape (option 130 = 0), so the hole cannot "
-            "be drilled by moves either",
-            where,
+        lacking = (
+            f"without its G code TABLEG({cell})"
+            if machine.g_code(cell) is None
+            else "by moves (a cycle macro's $P1 = -1)"
         )
-    if cycle.dwell or "DWELL" in cycle.kind or CYCLE_TYPES[cycle.kind][0] in UNBUILT_WAYS:
-        raise NotYetSupported(
-            f"CYCLE/{cycle.kind} by moves on a positioning machine without TABLEG({cell}) "
-            "(its dwell or its spindle M codes on the way)",
+        raise InputError(
+            f"CYCLE/{cycle.kind} on a positioning machine {lacking}: machine "
+            f"{machine.label} puts no Z on tape (option 130 = 0), so the hole cannot be "
+            "drilled by moves",
             where,
         )
 
@@ -118,12 +123,19 @@ class PositioningMotion:
         emit: Callable[[Block], None],
         warn: Callable[[Diagnostic], None],
         rapid_motion: Callable[[float], None],
+        store_m: Callable[[float], None],
+        dwell: Callable[[float], Block],
     ) -> None:
         machine = state.machine
         self.state = state
         self.emit = emit
         self.warn = warn
         self.rapid_motion = rapid_motion
+        self.store_m = store_m  # STOREM: a cycle's M code waits for its move (TAP, DRAG)
+        self.dwell = dwell  # a dwell block (CODE +4) at a hole's bottom
+        # the cycle macros' hook around each hole the control drills (core/macros/events.py)
+        self.hole_event: HoleEvent | None = None
+        self.switched: dict[int, bool] | None = None  # a cycle macro's F switch for a hole
         self.step = machine.number_option(14)
         self.z_mode = machine.number_option(130)
         self.suppress_repeats = machine.number_option(40) == 1
@@ -139,6 +151,8 @@ class PositioningMotion:
         # a cycle the control lacks, drilled by moves: it and the level it started from
         self.expanding: Cycle | None = None
         self.first_z = 0.0
+        # option 1 = 3: the present point is in this control's Z frame (core/motion/mixed.py)
+        self.in_own_frame = False
 
     # -- records ---------------------------------------------------------------------------
 
@@ -156,9 +170,11 @@ class PositioningMotion:
             if cycle is None:
                 self._move(record, point)
             elif self.state.machine.g_code(CYCLE_TYPES[cycle.kind][1]) is None:
-                self._hole_by_moves(record, point, cycle)
+                self.hole_by_moves(record, point, cycle)
+            elif self.hole_event is not None:
+                self.hole_event(record, point, cycle, self)
             else:
-                self._hole(record, point, cycle)
+                self.hole(record, point, cycle)
 
     def _points(self, record: Motion) -> list[tuple[float, ...]]:
         if record.subtype is not MotionSubtype.GODLTA:
@@ -259,6 +275,7 @@ class PositioningMotion:
         block.position = tuple(reached)
         block.steps = tuple(reached[a] - previous[a] for a in range(3))
         block.rapid = bool(self.state.feed.rapid_ipm)
+        block.switched, self.switched = self.switched, None  # a macro's F switch, once
         self.state.position.previous[:3] = reached
         self.emit(block)
 
@@ -270,14 +287,46 @@ class PositioningMotion:
 
     # -- CYCLGP ----------------------------------------------------------------------------
 
-    def _hole(self, record: Motion, point: tuple[float, ...], cycle: Cycle) -> None:
-        """One hole under the control's cycle: the cycle block when the plunge or the rapid
-        distance changes, then the XY position that runs it. The tool stays at its height."""
-        height = self.state.position.previous_part[Z]
+    def levels(self, point: tuple[float, ...], cycle: Cycle) -> tuple[float, float, float]:
+        """A hole's R plane, bottom and the tool's height (the level the control returns
+        to), in the machine frame the cycle block is measured in (TRANS, option 140 and
+        option 86's tool length applied)."""
         tz = self.state.position.translation[Z]
         top = point[Z] + tz + self._z_shift()
-        rapid_level = top + cycle.clearance - cycle.rapto
-        bottom = top - cycle.depth
+        height = self.state.position.previous_part[Z]
+        return top + cycle.clearance - cycle.rapto, top - cycle.depth, height
+
+    def restates(self, point: tuple[float, ...], cycle: Cycle) -> bool:
+        """The hole's cycle block goes out again (first hole, or a changed plunge or R)."""
+        rapid_level, bottom, height = self.levels(point, cycle)
+        plunge = to_steps(height - bottom, self.step)
+        rapid = to_steps(height - rapid_level, self.step)
+        if not self.has_r_register and rapid > 0:  # RAPIDP's Z move, then the rest
+            plunge, rapid = plunge - rapid, 0
+        return (self._cycle_g(cycle), plunge, rapid) != self.cycle_block
+
+    def hole(
+        self,
+        record: Motion,
+        point: tuple[float, ...],
+        cycle: Cycle,
+        levels: tuple[float, float] | None = None,
+        switches: dict[str, bool] | None = None,
+    ) -> None:
+        """One hole under the control's cycle: the cycle block when the plunge or the rapid
+        distance changes, then the XY position that runs it. The tool stays at its height.
+        ``levels`` (R plane, bottom; machine frame) replace the cycle's (a cycle macro's
+        $P11 and $P13). ``switches`` (a cycle macro's, spec 09 §5.6; core/macros/
+        cycle_switches.py): ``activate``, ``depth`` or ``clearance`` True state the cycle
+        block again, its G (activate), Z or R forced; ``depth`` or ``clearance`` False leave
+        Z or R out of it (the next hole states it again); ``feed`` True forces the F of the
+        hole's first block, False leaves F out of its blocks."""
+        switches = switches or {}
+        if any(switches.get(name) for name in ("activate", "depth", "clearance")):
+            self.cycle_block = None
+        rapid_level, bottom, height = self.levels(point, cycle)
+        if levels is not None:
+            rapid_level, bottom = levels
         plunge = to_steps(height - bottom, self.step) * self.step
         rapid_distance = to_steps(height - rapid_level, self.step) * self.step
         if plunge <= 0 or rapid_distance < 0 or rapid_distance > plunge:
@@ -286,7 +335,7 @@ class PositioningMotion:
                 f"clearance level {rapid_level:g} and bottom {bottom:g}",
                 record.where,
             )
-        g_code = self._cycle_g(cycle, record)
+        g_code = self._cycle_g(cycle)
         if not self.has_r_register and rapid_distance > 0:
             # RAPIDP: R as a rapid Z move in a block of its own; the cycle plunges the rest
             self.state.feed.rapid_requested = True
@@ -300,8 +349,15 @@ class PositioningMotion:
             self._arrive(part, steps)
             height, plunge, rapid_distance = part[Z], plunge - rapid_distance, 0.0
         wanted = (g_code, to_steps(plunge, self.step), to_steps(rapid_distance, self.step))
+        switched = {
+            cell: switches[name]
+            for cell, name in ((2, "activate"), (11, "feed"), (5, "depth"), (16, "clearance"))
+            if name in switches
+        }
         if wanted != self.cycle_block:
             self.cycle_block = wanted
+            if False in (switches.get("depth"), switches.get("clearance")):
+                self.cycle_block = None  # the control keeps an old level: stated next time
             block = Block(Code.POSITION_Z, record.number)
             block.cells[2] = g_code
             block.cells[5] = wanted[1] * self.step
@@ -309,24 +365,33 @@ class PositioningMotion:
                 block.cells[16] = wanted[2] * self.step
             block.position = tuple(self.state.position.previous[:3])
             block.steps = (0, 0, 0)
+            block.switched = switched or None
             self.emit(block)
+            if switched.get(11):
+                del switched[11]  # F forced once, in the hole's first block
+        # F left out of each block of the hole (POSFED would put it in the next)
+        self.switched = {11: switched[11]} if 11 in switched else None
         tz = self.state.position.translation[Z]
         self._move(record, (point[X], point[Y], height - tz - self._z_shift()), g_code, hole=True)
+        self.switched = None
 
-    def _cycle_g(self, cycle: Cycle, record: Motion) -> float:
+    def _cycle_g(self, cycle: Cycle) -> float:
         cell = CYCLE_TYPES[cycle.kind][1]
         code = self.state.machine.g_code(cell)
         assert code is not None  # (record() drills a cycle the control lacks by moves)
         return float(code)
 
-    def _hole_by_moves(self, record: Motion, point: tuple[float, ...], cycle: Cycle) -> None:
+    def hole_by_moves(self, record: Motion, point: tuple[float, ...], cycle: Cycle) -> None:
         """A hole whose cycle the control lacks (no TABLEG 82-90 code): drilled by
         positioning moves, as RAPIDP makes the rapid distance a control has no R register
         for (001 L30164-30182, L35274-35313) and as a contouring machine's cycle is
         expanded (core/motion/cycles.py): across at the tool's height, rapid down to R, feed
         to the bottom (DEEP in pecks), out to the return level; each block takes the
-        positioning mode's G or TABLEG(1). CYCLE refuses this where option 130 = 0 (no Z
-        on tape) and for the forms that dwell or need M codes (core/statements/cycle.py)."""
+        positioning mode's G or TABLEG(1). A dwell is a dwell block (CODE +4) where the
+        expansion puts it; an M code (TAP's reversal, DRAG's and MANUAL's stops, the
+        spindle again) waits for the next block as STOREM makes it (001 L38041-38087), a
+        code the machine lacks having been named at the CYCLE statement (comment 22).
+        CYCLE refuses this where option 130 = 0 (no Z on tape)."""
         position = self.state.position
         tx, ty, tz = position.translation
         shift = self._z_shift()
@@ -340,7 +405,17 @@ class PositioningMotion:
             check_segments(pecks, self.state.max_segments, record.where, "deep-hole cycle")
         hole = (point[X], point[Y], point[Z])
         feed = self.state.feed
-        for leg in cycle_legs(cycle, at, hole, self.first_z):
+        machine = self.state.machine
+        # the spindle turned again after TAP, DRAG or MANUAL: as it turns at this hole
+        turning = replace(cycle, restart_cell=5 if self.state.spindle.direction < 0 else 4)
+        for leg in cycle_legs(turning, at, hole, self.first_z):
+            if leg.dwell:
+                block = self.dwell(leg.dwell)
+                block.record = record.number
+                self.emit(block)
+            code = None if leg.m_code_cell is None else machine.m_code(leg.m_code_cell)
+            if code is not None:
+                self.store_m(code)
             feed.rapid_requested = leg.rapid
             self._move(record, leg.point)
         feed.rapid_requested = False

@@ -85,6 +85,9 @@ class Block:
     stop: bool = False  # a STOP or OPSTOP block (option 148 < 0 dwells only in these)
     skipped: bool = False  # output under OPSKIP/ON: "/" before the block
     keep_blanks: bool = False  # a text block punched with its blanks (option 256)
+    # a cycle macro's output switches (spec 09 §5.6): cell -> True forces the register out
+    # even when modal, False leaves it out (the control keeps the value it had)
+    switched: dict[int, bool] | None = None
     # a segment of a departure the postprocessor segmented: (first, last) of its segments;
     # None for a block not cut from a longer move (option 17's digit 2 prints only those two)
     segment: tuple[bool, bool] | None = None

@@ -127,6 +127,7 @@ class OutputElement(ModernProgram, OtherBlocks, Dwells, GeoutConversion):
         # a register macro's place (core/macros): each block's words pass through it
         self.register_hook: Callable[[Block, list[Word]], list[Word]] | None = None
         self.diagnostics: list[Diagnostic] = []
+        self.feed.diagnostics = self.diagnostics  # EIACOM's comment (magic three)
         self.assumed_feed = False
         # a positioning machine's feed type (option 78), set by the run; CYCLE/MILL in force
         self.positioning_feed: FeedType | None = None
@@ -172,7 +173,8 @@ class OutputElement(ModernProgram, OtherBlocks, Dwells, GeoutConversion):
         self.dump_only = state.head != 0
         # option 55 = 1: A/D testing holds each feed block for the corner after it
         self.accel_ipm: float | None = None
-        self.accel: AccelerationTest | None = None if self.dump_only else acceleration_test(self)
+        # (a multihead head's run, dump-only, is refused A/D rather than left without it)
+        self.accel: AccelerationTest | None = acceleration_test(self)
 
     # -- OUTPUT (flow chart 8) ------------------------------------------------------------
 

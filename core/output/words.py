@@ -182,15 +182,18 @@ class WordFormatter:
             value = block.cells[location]
             if value is ABSENT:
                 continue
+            forced = block.switched.get(location) if block.switched else None
+            if forced is False:
+                continue  # a cycle macro inhibited it: the modal value stays as it was
             number = float(value)
             if location == 1:
                 number = abs(number)
             if suppress and location == 2:
-                if self.suppress_g and number == self.previous_g:
+                if self.suppress_g and number == self.previous_g and not forced:
                     continue
                 self.previous_g = number
             if suppress and location == 11:
-                if self.suppress_f and number == self.previous_f:
+                if self.suppress_f and number == self.previous_f and not forced:
                     continue
                 self.previous_f = number
             if location == 11 and block.f_format is not None:

@@ -20,10 +20,12 @@ from dataclasses import replace
 from typing import TYPE_CHECKING
 
 from gecent.core.cl.records import Statement
-from gecent.core.errors import Diagnostic, InputError, NotYetSupported
+from gecent.core.errors import Diagnostic, InputError
 from gecent.core.motion.cycles import (
     CYCLE_TYPES,
     PROGRAM_STOP,
+    SPINDLE_CCLW,
+    SPINDLE_CLW,
     SPINDLE_OFF,
     Cycle,
     in_machine_units,
@@ -32,6 +34,7 @@ from gecent.core.motion.cycles import (
 )
 from gecent.core.motion.positioning import refuse_cycle_by_moves
 from gecent.core.output.block import Block, Code
+from gecent.core.output.element import NOT_AVAILABLE
 from gecent.core.statements.feed import program_feed
 
 # the control's own cycle block holds G, Z and R only (CYCLGP, 001 L30164-30178)
@@ -84,15 +87,10 @@ def cycle(run: Post, statement: Statement) -> None:
     # a control that bores also makes BORE's forms: control_cycles names a missing cell
     bore_form = parsed.kind.startswith("BORE,") and machine.g_code(CYCLE_TYPES["BORE"][1])
     multiaxis = machine.multiaxis and not positioning
+    # (with incremental dimensions, option 251 = 0 or 2, the control's block is G91's)
     control = (
         not positioning and not multiaxis and (machine.g_code(cell) is not None or bool(bore_form))
     )
-    if control and machine.number_option(251) != 1:
-        raise NotYetSupported(
-            f"CYCLE/{parsed.kind} by the control's own cycle (TABLEG({cell})) with "
-            "incremental dimensions (option 251 = 1 takes it in absolute ones)",
-            statement.where,
-        )
     unfit = None
     if control:
         unfit = run.control_cycle_element().unfit(parsed, run.state.spindle.direction)
@@ -100,6 +98,8 @@ def cycle(run: Post, statement: Statement) -> None:
     units = run.units
     run.cycle = in_machine_units(parsed, units.length)
     run.cycle_first_z = None
+    if by_moves:
+        _codes_on_the_way(run, run.cycle, statement)
     if not positioning and not control:
         run.cycle = _expanded(run, run.cycle, statement, multiaxis)
         if unfit is not None:
@@ -109,7 +109,7 @@ def cycle(run: Post, statement: Statement) -> None:
     elif run.control_cycles is not None:  # a cycle the control lacks follows one it has
         run.control_cycles.off(statement.number)
         run.control_cycles = None
-    if not positioning and "DWELL" in parsed.kind and not parsed.dwell:
+    if (by_moves or not positioning) and "DWELL" in parsed.kind and not parsed.dwell:
         run.warn(Diagnostic(NO_DWELL_TIME.format(parsed.kind), statement.where))
     _program_cycle_feed(run, parsed, statement)
 
@@ -126,19 +126,31 @@ def _expanded(run: Post, cycle: Cycle, statement: Statement, multiaxis: bool) ->
             f"{machine.number_option(59):.0f}): there is no spindle axis to drill along",
             statement.where,
         )
-    way_out = cycle.kind.rsplit(",", 1)[-1]
-    needed = {"DRAG": (SPINDLE_OFF,), "MANUAL": (SPINDLE_OFF, PROGRAM_STOP)}.get(way_out, ())
-    for cell in needed:
-        if machine.m_code(cell) is None:
-            raise NotYetSupported(
-                f"CYCLE/{cycle.kind} on a machine without TABLEM({cell})", statement.where
-            )
+    _codes_on_the_way(run, cycle, statement)
     restart = 5 if run.state.spindle.direction < 0 else 4  # the spindle turns as it did
     if axis != 2 and not multiaxis:
         # the level the cycle starts from, along the spindle axis (Post takes CL z itself)
         position = run.state.position
         run.cycle_first_z = position.previous_part[axis] - position.translation[axis]
     return replace(cycle, axis=axis, restart_cell=restart)
+
+
+def _codes_on_the_way(run: Post, cycle: Cycle, statement: Statement) -> None:
+    """A cycle drilled by moves stores M codes on the way: TAP the reversed spindle and the
+    spindle again, DRAG the spindle stop (TABLEM(6)), MANUAL the spindle and program stops
+    (TABLEM 6, 1). A code the machine lacks is STOREM's comment 22, given here once for
+    the statement, and the hole is drilled without it (001 L38041-38087; CLAMP does the
+    same, 001 L29337-29358; docs/decisions.md, "Cycles: the last forms")."""
+    machine = run.machine
+    way_out = CYCLE_TYPES[cycle.kind][0]
+    restart = SPINDLE_CCLW if run.state.spindle.direction < 0 else SPINDLE_CLW
+    needed = {
+        "tap": (SPINDLE_CLW + SPINDLE_CCLW - restart, restart),
+        "drag": (SPINDLE_OFF, restart),
+        "manual": (SPINDLE_OFF, PROGRAM_STOP, restart),
+    }.get(way_out, ())
+    if any(machine.m_code(cell) is None for cell in needed):
+        run.warn(Diagnostic(NOT_AVAILABLE, statement.where))
 
 
 def _positioning_withdrawal(run: Post, parsed: Cycle, statement: Statement, code: float) -> None:

@@ -4,10 +4,11 @@ ranges of a multi-range machine (option 18, FRTAB; options 91, 93, 219; TABLEM 1
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any, Protocol, runtime_checkable
 
 from gecent.core.cl.records import Arg, Statement, Word
-from gecent.core.errors import Diagnostic, InputError, MachineDefinitionError, NotYetSupported
+from gecent.core.errors import Diagnostic, InputError, MachineDefinitionError
+from gecent.core.families import HookPoint
 from gecent.core.feed.positioning import FeedContext
 from gecent.core.feed.rapid import feed_range_cell
 from gecent.core.motion.sfm import range_feed_limits
@@ -23,6 +24,25 @@ RANGE_NOT_AVAILABLE = "RANGE REQUESTED IS NOT AVAILABLE, USE HIGHEST"  # SPINDL'
 
 if TYPE_CHECKING:
     from gecent.core.dispatch.context import Post
+
+
+class _Hooks(Protocol):
+    def macfun(self, hook: HookPoint, **fields: Any) -> bool: ...
+
+    def has_macfun(self, hook: HookPoint) -> bool: ...
+
+
+class _Engine(Protocol):
+    @property
+    def hooks(self) -> _Hooks: ...
+
+
+@runtime_checkable
+class _Macros(Protocol):
+    """A run that may have a macro engine, with the machine's MACFUN (core/run.py's)."""
+
+    @property
+    def macros(self) -> _Engine | None: ...
 
 
 @dataclass(slots=True)
@@ -172,13 +192,21 @@ def _select_range(run: Post, requested: int | None, statement: Statement) -> Non
                 f"option 93 = {seconds:g} leaves the feed range change dwell to the machine's "
                 "MACFUN, but the machine has none (option 133 = 0)",
             )
-        # no sample MACFUN makes this dwell (MACF40 answers MCHCON 1, 2, 6, 7 and 8 only,
-        # 001 L27599ff.) and the MCHCON number of FEDRAT's hook is not legible (L27406-27568)
-        raise NotYetSupported(
-            "feed range change dwell by the machine's MACFUN (option 93 < 0): gecent has no "
-            "MACFUN hook for it",
-            statement.where,
-        )
+        # FEDRAT's MACSRT call, at the hook point named for it (its MCHCON number is not
+        # legible, L27406-27568): the handler outputs the dwell, the range M code waiting
+        engine = run.macros if isinstance(run, _Macros) else None
+        hooks = None if engine is None else engine.hooks
+        if hooks is None or not hooks.has_macfun(HookPoint.FEED_RANGE):
+            raise MachineDefinitionError(
+                machine.origin,
+                "optab",
+                93,
+                f"option 93 = {seconds:g} leaves the feed range change dwell to the machine's "
+                f"MACFUN, but machine {machine.label}'s MACFUN has no feed range hook "
+                f"({HookPoint.FEED_RANGE.value})",
+            )
+        hooks.macfun(HookPoint.FEED_RANGE, record=statement, values=(float(requested), -seconds))
+        return
     if seconds > 0:
         if machine.number_option(219) == 1:
             output.flush_m(statement.number)  # the M code in a block before the dwell

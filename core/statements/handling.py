@@ -30,21 +30,23 @@ from math import radians, sqrt
 from typing import TYPE_CHECKING, Any, Protocol, runtime_checkable
 
 from gecent.core.cl.records import Motion, MotionSubtype, Statement, Word
-from gecent.core.errors import Diagnostic, InputError, NotYetSupported
+from gecent.core.errors import Diagnostic, InputError
 from gecent.core.families import HookPoint
+from gecent.core.machine.definition import ROTARY_CELLS
 from gecent.core.motion.linear import path_length
+from gecent.core.motion.mixed import enter_way, is_mixed
 from gecent.core.motion.positioning import CORNER_MILLING_G, MODE_G, set12
 from gecent.core.motion.rounding import to_steps
 from gecent.core.output.block import Block, Code
+from gecent.core.statements.spindle_tool import rotate
 
 if TYPE_CHECKING:
     from gecent.core.dispatch.context import Post
-    from gecent.core.motion.linear import LinearMotion
     from gecent.core.motion.multiaxis import MultiaxisMotion
-    from gecent.core.motion.positioning import PositioningMotion
 
 HOME_LINEAR = (184, 185, 186)  # X, Y, Z (machine coordinates, CL order)
 HOME_ROTARY = (187, 188, 189, 190)  # rotary head, rotary table, third rotary, secondary
+HOME_AXIS_NAMES = {189: "third rotary axis", 190: "secondary axis"}
 CYCLE_OFF = 1  # TABLEG(1)
 SELECT_TOOL_G = 24  # TABLEG(24): PICKUP's G code
 LOAD_TOOL_G = 26  # TABLEG(26): head 1, small gripper; 27 large; 28, 29 head 2
@@ -53,30 +55,6 @@ POSITIONING_OFF_G = 60  # TABLEG(60)
 T_REGISTER = 13
 WRONG_POCKET = "ATTEMPTING TO UNLOAD TOOL IN WRONG MAGAZINE POCKET."  # comment 40
 MODES = {"OFF": 0, "FINE": 1, "NOBACK": 2, "COARSE": 3, "CORMIL": 4}
-
-
-@runtime_checkable
-class _Linear(Protocol):
-    """A run with a linear motion element (core/run.py's)."""
-
-    @property
-    def motion(self) -> LinearMotion: ...
-
-
-@runtime_checkable
-class _Positioning(Protocol):
-    """A run with a positioning motion element (core/run.py's)."""
-
-    @property
-    def positioning(self) -> PositioningMotion: ...
-
-
-@runtime_checkable
-class _Multiaxis(Protocol):
-    """A run with a multiaxis element (core/run.py's)."""
-
-    @property
-    def multiaxis(self) -> MultiaxisMotion: ...
 
 
 class _Hooks(Protocol):
@@ -96,12 +74,6 @@ class _Macros(Protocol):
 
     @property
     def macros(self) -> _Engine | None: ...
-
-
-def _multiaxis(run: Post, statement: Statement) -> MultiaxisMotion:
-    if not isinstance(run, _Multiaxis):
-        raise NotYetSupported(f"{statement.major} in this context", statement.where)
-    return run.multiaxis
 
 
 # -- GOHOME ------------------------------------------------------------------------------
@@ -132,25 +104,28 @@ def _go_home(run: Post, statement: Statement, target: list[float | None] | None)
         else target + [None] * (len(HOME_LINEAR + HOME_ROTARY) - len(target))
     )
     if machine.multiaxis:
-        _multiaxis_home(run, _multiaxis(run, statement), statement, home)
+        _multiaxis_home(run, run.multiaxis, statement, home)
         return
-    if machine.number_option(1) != 0 and not any(home[3:]):
+    devices = _rotary_devices_home(run, statement, home[3:])
+    if machine.number_option(1) != 0:
         _positioning_home(run, statement, home)
-        return
-    if any(home[3:]):
-        raise NotYetSupported(
-            "GOHOME of a rotary axis (options 187-190) on a machine without multiaxis motion",
-            where,
-        )
-    # a machine without a transform class: its machine point is the CL point plus TRANS
+    else:
+        _contouring_home(run, statement, home)
+    for device, angle in devices:
+        # ROTABL's own turn, as ROTATE/device,ATANGL,angle (the shorter way)
+        turn = (Word(device, None), Word("ATANGL", None), angle)
+        rotate(run, replace(statement, major="ROTATE", code=None, args=turn))
+
+
+def _contouring_home(run: Post, statement: Statement, home: list[float | None]) -> None:
+    """DEPART-SEGMNT-OUTPUT to home on a machine without a transform class: its machine
+    point is the CL point plus TRANS."""
     position = run.state.position
     point = tuple(
         (position.present_part[axis] if value is None else value) - position.translation[axis]
         for axis, value in enumerate(home[:3])
     )
     leg = Motion(statement.file, statement.line, statement.number, MotionSubtype.GOTO, (point,))
-    if not isinstance(run, _Linear):
-        raise NotYetSupported("GOHOME in this context", where)
     _rapid_if_asked(run, path_length(run.state.position, leg))
     run.motion.record(leg)
 
@@ -160,9 +135,9 @@ def _positioning_home(run: Post, statement: Statement, home: list[float | None])
     is home less TRANS and less the Z adjustment POSMOV makes (options 140 and 86 < 0).
     The move has no cycle (a hole at home would be drilled) and follows option 130; a
     RAPID before it, or rapid in force, takes it at rapid (POSMOV's own TSTFLG)."""
-    if not isinstance(run, _Positioning):
-        raise NotYetSupported("GOHOME in this context", statement.where)
     motion = run.positioning
+    if is_mixed(run.machine):
+        enter_way(run.state, motion, True)  # the 7500: home is a positioning move
     position = run.state.position
     point = [
         (position.present_part[axis] if value is None else value) - position.translation[axis]
@@ -173,6 +148,39 @@ def _positioning_home(run: Post, statement: Statement, home: list[float | None])
         statement.file, statement.line, statement.number, MotionSubtype.GOTO, (tuple(point),)
     )
     motion.record(leg, None)
+
+
+def _rotary_devices_home(
+    run: Post, statement: Statement, homes: list[float | None]
+) -> list[tuple[str, float]]:
+    """The rotary devices GOHOME turns on a machine without a transform class: ROTATE's
+    head (option 187) and table (option 188), each whose home the machine file sets (a
+    home of 0 is the reading they start at). Options 189 and 190 home the third rotary
+    and the secondary axis, which only a transform class has (docs/decisions.md, h9;
+    001 L26478-26500)."""
+    machine = run.machine
+    for number, value in zip(HOME_ROTARY[2:], homes[2:], strict=False):
+        if value:
+            raise InputError(
+                f"GOHOME: option {number} = {value:g} homes the "
+                f"{HOME_AXIS_NAMES[number]}, which machine {machine.label} does not have: "
+                "it is an axis of a transform class (option 116 = 0 here; 001 L26490-26500)",
+                statement.where,
+            )
+    devices = [
+        (name, float(value))
+        for name, value in zip(("HEAD", "TABLE"), homes[:2], strict=False)
+        if value
+    ]
+    formats = machine.registers.formats
+    if devices and formats[ROTARY_CELLS[0]] is None and formats[ROTARY_CELLS[1]] is None:
+        numbers = ", ".join(f"option {187 if n == 'HEAD' else 188}" for n, _ in devices)
+        raise InputError(
+            f"GOHOME: {numbers} gives a rotary home, but machine {machine.label} has no "
+            "rotary register (DBFSEG 6 or 7) to turn it with (001 L26478-26489)",
+            statement.where,
+        )
+    return devices
 
 
 def _rapid_if_asked(run: Post, length: float) -> None:
@@ -231,17 +239,19 @@ def load(run: Post, statement: Statement) -> None:
         _positioning_load(run, statement)
         return
     if not machine.multiaxis:
-        # GECENT's LOAD is the multiaxis one (GEMAXS, "OPTAB(116) must be set"); APT's
-        # generic LOAD/TOOL elsewhere is a tool change gecent reads as LOADTL or TOOLNO
-        raise NotYetSupported(
-            "LOAD/TOOL on a machine without a transform class (option 116): give the tool "
-            "change as LOADTL/n or TOOLNO/n",
+        # GECENT's LOAD is LOADGM, the multiaxis one (GEMAXS): the manual restricts it to
+        # a machine with a transform class; a contouring tool change is LOADTL or TOOLNO
+        raise InputError(
+            f"LOAD/TOOL on machine {machine.label}, a contouring machine without a transform "
+            'class: LOAD is the multiaxis tool change (LOADGM), and "OPTAB(116) must be set '
+            'to a value" (001 L33878-33925, L33922); give the tool change as LOADTL/n or '
+            "TOOLNO/n",
             where,
         )
     tool, large, length = _load_arguments(statement)
     if not run.state.position.from_given:
         raise InputError("LOAD/TOOL before any FROM: a FROM must come first", where)
-    motion = _multiaxis(run, statement)
+    motion = run.multiaxis
     position = run.state.position
     before = list(position.present)
     engine = run.macros if isinstance(run, _Macros) else None

@@ -21,7 +21,7 @@ from collections.abc import Callable
 from typing import TYPE_CHECKING
 
 from gecent.core.cl.records import Statement, Word
-from gecent.core.errors import Diagnostic, InputError, MachineDefinitionError, NotYetSupported
+from gecent.core.errors import Diagnostic, InputError, MachineDefinitionError
 from gecent.core.motion.rounding import to_steps
 from gecent.core.output.block import Block, Code
 from gecent.core.statements.auxiliary import code_by_itself
@@ -47,11 +47,6 @@ SADDLE_USAGE = "SELECT/HED,SADDLE expects a move d, then TRAV, or a feed f with 
 # (001 L23591-23595, L23247): docs/decisions.md (SAFETY and SELECT/HED)
 HEAD_USAGE = "SELECT/HED expects 1, 2, 3, BAR, or SADDLE and its move"
 HEAD_CELLS: dict[str | float, int] = {1.0: 125, 2.0: 126, 3.0: 127, "BAR": 57}
-# the gear-engage codes of heads 2 and 3, rapid and feed on X, Y, Z (spec 07 §4.2)
-HEAD_GEAR_CELLS: dict[str | float, tuple[int, ...]] = {
-    2.0: tuple(range(142, 148)),
-    3.0: tuple(range(148, 154)),
-}
 
 
 def select(run: Post, statement: Statement) -> None:
@@ -148,16 +143,13 @@ def _head(run: Post, statement: Statement) -> None:
             "COMBIN/2 must come first, before the first motion, on a machine with two heads",
             where,
         )
-    gears = HEAD_GEAR_CELLS.get(name, ())
-    if machine.number_option(46) != 0 and any(machine.m_code(c) is not None for c in gears):
-        # RAPIDO shifts head 1's gears (TABLEM 42-47) whichever head is selected
-        raise NotYetSupported(
-            f"rapid gear shifts of head {name:g} (TABLEM({gears[0]})-({gears[-1]}))", where
-        )
     feed = run.state.feed
     feed.rapid_requested = False  # RAPFLG
     if feed.rapid_mode:
-        run.rapid.leave()  # RAPIDX: FLRPON, FRAPID, RAPLOW, RAPRNG
+        run.rapid.leave()  # RAPIDX: FLRPON, FRAPID, RAPLOW, RAPRNG (the old head's gears)
+    if not isinstance(name, str):
+        # TLHEAD: RAPID shifts the selected head's gears, TABLEM 42-47, 142-147 or 148-153
+        run.rapid.select_head(int(name))
     code_by_itself(run, statement, cell)
 
 

@@ -6,7 +6,6 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, Protocol, runtime_checkable
 
 from gecent.core.cl.records import Statement, Word
-from gecent.core.errors import NotYetSupported
 from gecent.core.motion.rotary_absolute import AbsoluteRotary, rotary_feed
 from gecent.core.motion.rotary_devices import (
     INDEXER_WORDS,
@@ -24,8 +23,6 @@ from gecent.core.statements.feed import feed_per_revolution
 
 if TYPE_CHECKING:
     from gecent.core.dispatch.context import Post
-    from gecent.core.motion.multiaxis import MultiaxisMotion
-    from gecent.core.motion.positioning import PositioningMotion
 
 
 def spindl(run: Post, statement: Statement) -> None:
@@ -68,8 +65,6 @@ def rotate(run: Post, statement: Statement) -> None:
         # turns, and the part frame with it or not (ROTREF, option 198)
         from gecent.core.motion.multiaxis_rotate import rotate as rotate_multiaxis
 
-        if not isinstance(run, _Multiaxis):
-            raise NotYetSupported("ROTATE on a multiaxis machine in this context", statement.where)
         rotate_multiaxis(run.multiaxis, statement)
         return
     run.rotary.statement(statement)
@@ -92,16 +87,8 @@ def _rotate_absolute(run: Post, statement: Statement) -> None:
     before = element.cut_minutes
     element.statement(statement)
     run.output.cut_minutes += element.cut_minutes - before
-    if run.cycle is not None and isinstance(run, _WithPositioning):
+    if run.cycle is not None:
         run.positioning.cycle_block = None
-
-
-@runtime_checkable
-class _WithPositioning(Protocol):
-    """A run with a positioning element (core/run.py's)."""
-
-    @property
-    def positioning(self) -> PositioningMotion: ...
 
 
 @runtime_checkable
@@ -109,14 +96,6 @@ class _WithPlugins(Protocol):
     """A run that knows its plugin set (core/run.py's)."""
 
     plugins: PluginSet | None
-
-
-@runtime_checkable
-class _Multiaxis(Protocol):
-    """A run with a multiaxis element (core/run.py's)."""
-
-    @property
-    def multiaxis(self) -> MultiaxisMotion: ...
 
 
 HANDLERS = {

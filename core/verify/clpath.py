@@ -15,7 +15,7 @@ from __future__ import annotations
 
 from collections.abc import Iterable
 from dataclasses import dataclass, field, replace
-from math import hypot
+from math import hypot, sqrt
 
 from gecent.core.cl.records import (
     Arelem,
@@ -63,6 +63,10 @@ class ArcSpec:
     chords: bool = False  # the machine posts it as straight moves ending on the arc
     sag: float = 0.0  # how far such a chord may fall inside the arc (option 262, or a step)
     full: bool = False  # it ends where it began: a whole circle (the post's rule)
+    # a circle about an axis along none of the machine's: its unit axis (machine axes);
+    # the post gives it as chords in its own plane (core/motion/arc_pieces.py)
+    normal: Point | None = None
+    rise: tuple[float, float] = (0.0, 0.0)  # its start's and end's offsets along ``normal``
 
 
 @dataclass(frozen=True, slots=True)
@@ -320,6 +324,9 @@ class _Reader:
         tx, ty, tz = self.translation
         centre = (xc + tx, yc + ty, zc + tz)
         epsilon = self.machine.number_option(5)
+        if sum(abs(c) > epsilon for c in (i, j, k)) > 1:
+            self._tilted_arc(centre, (i, j, k), record, points)
+            return
         plane = 2 if abs(i) > epsilon else 1 if abs(j) > epsilon else 0
         u, v, _ = CL_PLANES[plane]
         start = self.at
@@ -351,6 +358,40 @@ class _Reader:
                 self._target(point, kind, record, None)
             return
         self._target(points[-1], "feed", record, spec)
+
+    def _tilted_arc(self, centre: Point, axis: Point, record: Motion, points: list[Point]) -> None:
+        """A circle about a tilted axis, as the post gives it: one CL point (CAM) is chords
+        counterclockwise about the axis, each ending on the circle within the chord
+        tolerance; APT's several points are straight cuts through them."""
+        kind = self._kind()
+        if len(points) > 1 or kind == "rapid":
+            for point in points:
+                self._target(point, kind, record, None)
+            return
+        length = sqrt(sum(c * c for c in axis))
+        n = [c / length for c in axis]
+        offset = [a - b for a, b in zip(points[-1], centre, strict=True)]
+        along = sum(a * b for a, b in zip(offset, n, strict=True))
+        radius = sqrt(max(0.0, sum(c * c for c in offset) - along * along))
+        rise = sum((a - b) * c for a, b, c in zip(self.at, centre, n, strict=True)), along
+        origin = self.machine_point((0.0, 0.0, 0.0))
+        normal = [a - b for a, b in zip(self.machine_point(n), origin, strict=True)]
+        size = sqrt(sum(c * c for c in normal)) or 1.0
+        columns = [self.machine_point(e) for e in ((1, 0, 0), (0, 1, 0), (0, 0, 1))]
+        a, b, c = columns  # a mirrored axis map turns the sense about the axis
+        det = a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0])
+        det += a[2] * (b[0] * c[1] - b[1] * c[0])
+        spec = ArcSpec(
+            self.machine_point(centre),
+            radius,
+            "XY",
+            det >= 0,
+            chords=True,
+            sag=self.chord_sag,
+            normal=(normal[0] / size, normal[1] / size, normal[2] / size),
+            rise=rise,
+        )
+        self._target(points[-1], kind, record, spec)
 
     def _arc_spec(
         self,

@@ -8,6 +8,7 @@ axis.
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 from math import hypot
 
@@ -206,9 +207,48 @@ class _Walk:
             return f"feed {move.feed:g} where the CL has {value:g}"
         return None
 
+    def tilted_chord_problem(self, move: TapeMove, target: Target) -> str | None:
+        """A circle about a tilted axis, given as chords in its own plane: each move ends
+        on the circle, turns the circle's way about the axis and falls inside the arc no
+        more than the chord tolerance."""
+        arc = target.arc
+        assert arc is not None and arc.normal is not None
+        if move.kind == "arc":
+            return "an arc where the machine posts straight moves along it"
+        n = arc.normal
+        end = tuple(e - c for e, c in zip(move.end, arc.centre, strict=True))
+        along = sum(e * k for e, k in zip(end, n, strict=True))
+        low, high = sorted(arc.rise)
+        if not low - self.tolerance <= along <= high + self.tolerance:
+            return f"a move along the arc leaves its plane by {max(low - along, along - high):.4f}"
+        a = _in_plane(tuple(s - c for s, c in zip(self.start, arc.centre, strict=True)), n)
+        b = _in_plane(end, n)
+        radius = hypot(*b)
+        if abs(radius - arc.radius) > self.arc_tolerance:
+            return f"a move along the arc ends {abs(radius - arc.radius):.4f} off it"
+        cross = (
+            (a[1] * b[2] - a[2] * b[1]) * n[0]
+            + (a[2] * b[0] - a[0] * b[2]) * n[1]
+            + (a[0] * b[1] - a[1] * b[0]) * n[2]
+        )
+        if abs(cross) > self.tolerance * arc.radius and (cross > 0) != arc.counterclockwise:
+            return "a move along the arc goes back against the arc's sense"
+        half = hypot(*(q - p for p, q in zip(a, b, strict=True))) / 2
+        sag = arc.radius - max(0.0, arc.radius * arc.radius - half * half) ** 0.5
+        if half > arc.radius or sag > arc.sag + self.arc_tolerance:
+            return (
+                f"a straight move along the arc falls {sag:.4f} inside it, more than "
+                f"the machine's chord tolerance {arc.sag:g}"
+            )
+        if self.close(move.end, target.point):
+            self.result.arcs += 1
+        return None
+
     def arc_problem(self, move: TapeMove, target: Target) -> str | None:
         arc = target.arc
         assert arc is not None
+        if arc.normal is not None:
+            return self.tilted_chord_problem(move, target)
         if arc.chords:  # straight moves along the arc (options 261/262): each ends on it
             if move.kind == "arc":
                 return "an arc where the machine posts straight moves along it"
@@ -254,6 +294,16 @@ class _Walk:
             if off > self.tolerance + arc.slack:
                 return f"a CL point of the arc is {off:.4f} off the tape's arc"
         return None
+
+
+def _in_plane(offset: Sequence[float], normal: Point) -> tuple[float, float, float]:
+    """``offset`` less its component along the unit ``normal``."""
+    along = sum(a * b for a, b in zip(offset, normal, strict=True))
+    return (
+        offset[0] - along * normal[0],
+        offset[1] - along * normal[1],
+        offset[2] - along * normal[2],
+    )
 
 
 def compare(
