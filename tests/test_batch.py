@@ -618,3 +618,31 @@ def test_sigterm_stops_the_batch_and_its_workers(tmp_path: Path) -> None:
             or "Z" in Path(f"/proc/{pid}/stat").read_text().split()[2]
         ), pid
     del os
+
+
+def test_a_job_that_kills_its_dask_worker_is_named_and_the_others_post(tmp_path: Path) -> None:
+    """Jobs go several to a Dask task: a task whose worker dies runs again one job to a
+    task, so only the job that kills its worker is crashed."""
+    distributed = pytest.importorskip("distributed")
+    programs(tmp_path, 9)
+    (tmp_path / "dies.py").write_text("import os\nos._exit(9)\n")
+    jobs = "".join(
+        f'[[job]]\ninput = "part{n}.apt"\n' + ('macros = ["dies.py"]\n' if n == 4 else "") + "\n"
+        for n in range(9)
+    )
+    (tmp_path / "jobs.toml").write_text('[defaults]\nmachine = "linuxcnc-mill"\n\n' + jobs)
+    with distributed.LocalCluster(
+        n_workers=1, threads_per_worker=1, processes=True, dashboard_address=":0"
+    ) as cluster:
+        result = batch(
+            "--manifest",
+            str(tmp_path / "jobs.toml"),
+            "--out",
+            str(tmp_path / "o"),
+            "--scheduler",
+            cluster.scheduler_address,
+            "--json",
+            str(tmp_path / "s.json"),
+        )
+    assert result.exit_code == 1, result.output
+    assert statuses(tmp_path / "s.json") == ["posted"] * 4 + ["crashed"] + ["posted"] * 4

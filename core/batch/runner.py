@@ -18,13 +18,14 @@ from importlib import import_module
 from multiprocessing import get_all_start_methods, get_context
 from multiprocessing.context import BaseContext
 from pathlib import Path
-from typing import Any
+from typing import Any, TypeVar
 
 from gecent.core.batch.jobs import Job
 from gecent.core.batch.state import State, job_key, output_paths, plugins_fingerprint
-from gecent.core.batch.worker import Outcome, installed, run_job
+from gecent.core.batch.worker import Outcome, installed, run_job, run_jobs
 from gecent.core.errors import EXIT_INTERNAL, InputError
 
+T = TypeVar("T")
 CRASHED = (
     "the worker process died while posting this job (killed, out of memory or a crash in "
     "an extension); the other jobs went on"
@@ -194,10 +195,17 @@ def _isolated(job: Job, timeout: float | None, context: BaseContext) -> Outcome:
             return Outcome(job.number, "crashed", EXIT_INTERNAL, CRASHED)
 
 
+CHUNK_JOBS = 16  # at most this many jobs in one Dask task,
+CHUNK_BYTES = 4 << 20  # and at most about this many bytes of CL files
+
+
 def _on_dask(jobs: list[Job], scheduler: str, timeout: float | None) -> Iterator[Outcome]:
     """The jobs on a Dask cluster: each ships its CL file's bytes and gets its outputs back,
-    so the workers need gecent and the machine packs installed, not this file system. A
-    bounded number of jobs is in flight, so the CL files are not all held at once."""
+    so the workers need gecent and the machine packs installed, not this file system. Small
+    jobs go several to a task (a task costs the scheduler more than a small post), and a
+    bounded number of tasks is in flight, so the CL files are not all held at once. A task
+    whose worker died runs again one job to a task, so the job that kills its worker is
+    named ``crashed`` and the others are posted."""
     try:
         distributed: Any = import_module("distributed")
     except ImportError:
@@ -212,26 +220,47 @@ def _on_dask(jobs: list[Job], scheduler: str, timeout: float | None) -> Iterator
         raise InputError(f"cannot reach the Dask scheduler at {scheduler}: {exc}") from None
     with client:
         _check_workers(client)
-        window = max(4, 4 * max(1, len(client.scheduler_info().get("workers", {}))))
-        queue = iter(jobs)
-        in_flight: dict[Any, Job] = {}
+        workers = max(1, len(client.scheduler_info().get("workers", {})))
+        size = max(1, min(CHUNK_JOBS, len(jobs) // (4 * workers)))
+        queue = _chunks(jobs, size)
+        in_flight: dict[Any, list[Job]] = {}
         completed = distributed.as_completed()
 
-        def submit(count: int) -> None:
-            for job in _take(queue, count):
-                future = client.submit(run_job, job.shipped(), timeout, pure=False)
-                in_flight[future.key] = job
-                completed.add(future)
+        def submit(chunk: list[Job]) -> None:
+            future = client.submit(run_jobs, chunk, timeout, pure=False)
+            in_flight[future.key] = chunk
+            completed.add(future)
 
-        submit(window)
+        for chunk in _take(queue, 2 * workers):
+            submit(chunk)
         for future in completed:
-            job = in_flight.pop(future.key)
+            chunk = in_flight.pop(future.key)
             try:
-                yield future.result()
-            except Exception as exc:  # KilledWorker: the job took its workers down
-                yield Outcome(job.number, "crashed", EXIT_INTERNAL, f"{CRASHED} ({exc})")
+                yield from future.result()
+            except Exception as exc:  # KilledWorker: a job took its workers down
+                if len(chunk) > 1:
+                    for job in chunk:
+                        submit([job])
+                else:
+                    yield Outcome(chunk[0].number, "crashed", EXIT_INTERNAL, f"{CRASHED} ({exc})")
             future.release()
-            submit(1)
+            for chunk in _take(queue, 1):
+                submit(chunk)
+
+
+def _chunks(jobs: list[Job], size: int) -> Iterator[list[Job]]:
+    """The jobs, shipped, ``size`` to a chunk (fewer when their CL files are large)."""
+    chunk: list[Job] = []
+    held = 0
+    for job in jobs:
+        shipped = job.shipped()
+        chunk.append(shipped)
+        held += len(shipped.input_bytes or b"")
+        if len(chunk) >= size or held >= CHUNK_BYTES:
+            yield chunk
+            chunk, held = [], 0
+    if chunk:
+        yield chunk
 
 
 def _check_workers(client: Any) -> None:
@@ -265,7 +294,7 @@ def _worker_identity() -> tuple[str, str]:
     return (__version__, plugins_fingerprint(installed()))
 
 
-def _take(items: Iterator[Job], count: int) -> Iterable[Job]:
+def _take(items: Iterator[T], count: int) -> Iterable[T]:
     for _ in range(count):
         item = next(items, None)
         if item is None:

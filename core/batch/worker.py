@@ -76,6 +76,11 @@ def run_job(job: Job, timeout: float | None = None) -> Outcome:
     return outcome
 
 
+def run_jobs(jobs: list[Job], timeout: float | None = None) -> list[Outcome]:
+    """Several jobs in one task (a Dask task costs more than a small post)."""
+    return [run_job(job, timeout) for job in jobs]
+
+
 def _post(job: Job, folder: Path) -> Outcome:
     from gecent.core.dispatch.post import post
     from gecent.core.output.modern import modern_output
