@@ -6,7 +6,7 @@ overlay is called in to process and redevelop a new CL tape before continuing wi
 regular GECENT III sequence"; GEPLAD is "the planning overlay which produces tool setups and
 machinability features for positioning machines". The manual's "Section 4.10 on GEPLAD" is
 not in it (§4.10 is the dwell section), so the pass is built as a 1970 drill post's planning
-most likely was (docs/decisions.md, "h4"):
+most likely was (docs/decisions.md, "issue 22 wave 7"):
 
 * the new CL tape: each run of holes a tool drills under one CYCLE at one hole-top height
   (single-point GOTOs with nothing but comments between them) is put in nearest-neighbour

@@ -499,7 +499,7 @@ def _names_gecent(statement: Statement) -> bool:
 CURVE_WORDS = frozenset({"NURBS", "KNOT", "CNTRL", "SPLINE", "BSPLINE"})
 AFTER_END = "END OR RESET HAS NOT BEEN FOLLOWED BY A FROM POINT."  # comment 47 (L34080)
 UNKNOWN_WORD = "IS NOT A GECENT III POSTPROCESSOR WORD; STATEMENT DISREGARDED"
-# combinations the manual's overlays do not make (docs/decisions.md, h4): the threading
+# combinations the manual's overlays do not make (docs/decisions.md, issue 22 wave 7): the threading
 # routines are the lathe's THREAD/THREDO (GELATH) and the mill's THREDM (GEMILL), SFMO the
 # lathe's (001 L38323-38380, L37415-37420); GEMAXS drives a contouring control (L443-444;
 # the multiaxis sample has option 1 = 0, L550-566)

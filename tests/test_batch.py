@@ -621,8 +621,8 @@ def test_sigterm_stops_the_batch_and_its_workers(tmp_path: Path) -> None:
 
 
 def test_a_job_that_kills_its_dask_worker_is_named_and_the_others_post(tmp_path: Path) -> None:
-    """Jobs go several to a Dask task: a task whose worker dies runs again one job to a
-    task, so only the job that kills its worker is crashed."""
+    """Jobs go several to a Dask task: the jobs of a task whose worker dies run again one
+    by one, so only the job that kills its worker is crashed."""
     distributed = pytest.importorskip("distributed")
     programs(tmp_path, 9)
     (tmp_path / "dies.py").write_text("import os\nos._exit(9)\n")

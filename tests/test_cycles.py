@@ -47,7 +47,7 @@ def test_apt_fixed_form_and_creo_couplets_read_alike() -> None:
         ("CYCLE/DRILL,IPM,3", InputError),  # no depth
         ("CYCLE/DRILL,0.5,0.1,7", InputError),  # a value left over
         ("CYCLE/DRILL,DEPTH", InputError),
-        ("CYCLE/SPIRAL,1", InputError),  # (not yet supported until h4: not a GECENT cycle)
+        ("CYCLE/SPIRAL,1", InputError),  # (not yet supported until wave 7: not a GECENT cycle)
         ("CYCLE/DRILL,1,ORIENT", InputError),
     ],
 )
@@ -111,7 +111,7 @@ def test_return_levels() -> None:
 
 
 def test_a_control_with_its_own_drilling_cycle_but_no_r_plane_code_drills_by_moves() -> None:
-    # was NotYetSupported (incremental dimensions); wave 9 (h7) builds G91's block, and this
+    # was NotYetSupported (incremental dimensions); wave 9 builds G91's block, and this
     # control, with no G99 (TABLEG(126)), has the cycle drilled by moves
     text = '[machine]\nname = "g81"\ntitle = "G81 MILL"\n[tableg]\n82 = 81\n'
     machine = load_machine_text(text, "g81.toml")

@@ -212,7 +212,7 @@ def test_a_cycle_on_a_machine_without_z_is_bad_input() -> None:
 
 
 def test_drag_on_a_machine_without_a_spindle_stop_is_comment_22() -> None:
-    # was NotYetSupported; wave 9 (h7): STOREM's comment 22 (tests/test_cycles_wave9.py)
+    # was NotYetSupported; wave 9: STOREM's comment 22 (tests/test_cycles_wave9.py)
     no_stop = load_machine_text('[machine]\nname = "m"\ntitle = "M"\n[tablem]\n6 = "absent"\n')
     result = post(["CYCLE/BORE,DRAG,1,IPM,2,0.1"], no_stop)
     assert [d.text for d in result.diagnostics] == [

@@ -227,7 +227,7 @@ def test_mach40_a_hole_along_another_axis_than_the_tool_s_is_named() -> None:
     # (OUT: DRILL's five-axis hole pattern is built, tests/test_five_axis_hole_pattern.py)
     program = [*MACH40_HOLES[:-1], "GOTO/2,0,0,0,0,1"]
     program[4] = "CYCLE/OUT,DEPTH,1,CLEAR,0.1"
-    # (not yet supported until h4: the tool CYCLE/OUT left in the hole cannot turn there)
+    # (not yet supported until wave 7: the tool CYCLE/OUT left in the hole cannot turn there)
     with pytest.raises(InputError, match=r"tool axis \(0, 0, 1\) is not the one.*CYCLE/IN"):
         post(program, mach40())
 

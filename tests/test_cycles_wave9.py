@@ -1,4 +1,4 @@
-"""Wave 9 (h7): the last canned-cycle forms that stopped a run, built (issue 22).
+"""Wave 9: the last canned-cycle forms that stopped a run, built (issue 22).
 
 * a positioning control's missing cycle drilled by moves now dwells and stores its spindle
   M codes on the way: TAP out with the spindle reversed, BORE,DRAG and BORE,MANUAL with the
@@ -13,7 +13,7 @@
 
 No worked example of the manual covers these forms (the digests' "Worked examples" have
 none for canned cycles): the values below are worked out in each test's docstring.
-Decisions: docs/decisions.md, "Cycles: the last forms (issue 22, h7)"."""
+Decisions: docs/decisions.md, "Cycles: the last forms (issue 22 wave 9)"."""
 
 from __future__ import annotations
 

@@ -290,7 +290,7 @@ def test_the_nx_example_plots_through_its_dialect(tmp_path: Path) -> None:
     assert drawn.exit_code == 0, drawn.output
     assert "44 moves drawn" in drawn.output
     plain = CliRunner().invoke(main, [*arguments, "--dialect", "none"])
-    # (bad input since h4: DEEP is a cycle of its own, not a DRILL modifier, 001 L30106-30130)
+    # (bad input since wave 7: DEEP is a cycle of its own, not a DRILL modifier, 001 L30106-30130)
     assert plain.exit_code == 2 and "CYCLE/DRILL does not take DEEP" in plain.output
 
 

@@ -1,4 +1,4 @@
-"""The last fatal errors of §5.7.1 (issue 22, h11), each raised where the manual raises it:
+"""The last fatal errors of §5.7.1 (issue 22 wave 9), each raised where the manual raises it:
 
 * 41, TURRET: a turret corrective move that cannot be segmented (001 L39074-39078,
   L28419-28421; core/turret.py);

@@ -119,7 +119,7 @@ def test_the_second_hole_bottom_by_hand_on_the_slides(tmp_path: Path) -> None:
 def test_out_on_a_new_tool_axis_from_inside_a_hole_is_bad_input(
     plugins: PluginSet, tmp_path: Path
 ) -> None:
-    """OUT stays at the bottom: the tool would turn inside the hole (bad input since h4,
+    """OUT stays at the bottom: the tool would turn inside the hole (bad input since wave 7,
     which built OUT and IN on a new axis: tests/test_last_forms_wave7.py)."""
     job = tmp_path / "out.apt"
     job.write_text(

@@ -1,6 +1,6 @@
 """GEPLAD, the planning pre-pass of MACHIN/GECENT,n,PLAN on a positioning machine (manual
 §2.2.2 C, 001 L473-476; the overlay list, 001 L311-318; core/plan.py; docs/decisions.md
-"h4"): the holes of each cycle run in nearest-neighbour order, the tool setups and the
+"issue 22 wave 7"): the holes of each cycle run in nearest-neighbour order, the tool setups and the
 table travel as notes, the planned tape numbered afresh."""
 
 from __future__ import annotations

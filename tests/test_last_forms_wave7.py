@@ -1,5 +1,5 @@
-"""Issue 22, h4: the last "not yet supported" statement forms, built to the manual or, where
-it defines nothing, as decided in docs/decisions.md ("h4: the last not-yet-supported forms").
+"""Issue 22, wave 7: the last "not yet supported" statement forms, built to the manual or, where
+it defines nothing, as decided in docs/decisions.md (issue 22, wave 7).
 
 * ROTATE/TURRET on a positioning machine (ROTUR, 001 L36345-36382): station n comes down as
   TOOLGP loads a tool: TABLEG(1), T n and the turret-index M code TABLEM(8) in one block,
@@ -249,7 +249,7 @@ def multiaxis(options: dict[int, float] | None = None) -> MachineDefinition:
     ],
 )
 def test_combinations_no_overlay_makes_are_bad_input(lines, build, message) -> None:  # type: ignore[no-untyped-def]
-    """(Not yet supported until h4: the manual's overlays do not make them.)"""
+    """(Not yet supported until issue 22 wave 7: the manual's overlays do not make them.)"""
     with pytest.raises(InputError, match=message) as error:
         post(lines, build())
     assert error.value.where is not None and error.value.where.line == len(lines)

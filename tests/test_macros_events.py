@@ -468,7 +468,7 @@ def test_system_variables_are_checked_by_name() -> None:
 
 
 def test_cycle_macros_on_a_positioning_machine_run_around_the_hole() -> None:
-    # was NotYetSupported; wave 9 (h7) builds them (tests/test_cycles_wave9.py)
+    # was NotYetSupported; wave 9 builds them (tests/test_cycles_wave9.py)
     macros = Macros(machine="mach24")
     seen: list[float] = []
 

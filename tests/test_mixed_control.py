@@ -2,7 +2,7 @@
 option 132 = 8; 001 L24352-24356, L25958), and option 213 (L26636-26649): rapid moves and
 holes go out by the positioning control (absolute, GEPOS), feed moves by the contouring
 control (departures, GETERP) from the same present point (core/motion/mixed.py;
-docs/decisions.md, h6).
+docs/decisions.md, issue 22 wave 8).
 
 The machine M7500 is the sample drill MACH24 (manual §5.6.8.1) given the 7500's
 contouring option: option 1 = 3, option 132 = 8, option 130 = +1 (Z in a block of its

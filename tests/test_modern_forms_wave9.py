@@ -1,4 +1,4 @@
-"""The last not-yet-supported forms of issue 22 on the modern packs (h8; options 251-265,
+"""The last not-yet-supported forms of issue 22 on the modern packs (wave 9; options 251-265,
 docs/modern-controls.md), each posted and, where LinuxCNC's rs274 is here and the verifier
 models the form, read back by ``gecent verify``:
 

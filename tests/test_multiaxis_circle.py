@@ -152,7 +152,7 @@ def test_an_arc_that_turns_the_table_is_one_circle(tmp_path: Path) -> None:
     (the machine circle about (0, 4)), C turns 3 degrees = .8333 hundredths, within the
     1-9.9999 code's rotary range (ROTMAX / 10 = .99999). One G03 block with J 5 and the C
     departure; MACH40 has no D, E registers (its 17 is H), so no supplementary constant
-    goes out (tests/test_last_forms_wave7.py has them; until h4 a warning said so)."""
+    goes out (tests/test_last_forms_wave7.py has them; until issue 22 wave 7 a warning said so)."""
     end = (5 * cos(radians(6)), 5 * sin(radians(6)))
     lines = [
         "FROM/5,0,1,1,0,0",

@@ -174,7 +174,7 @@ def test_a_tool_axis_not_of_length_one_is_warned(plugins: PluginSet, tmp_path: P
 def test_what_multiaxis_motion_did_not_do_is_built(
     plugins: PluginSet, tmp_path: Path, line: str, feature: str
 ) -> None:
-    """(Not yet supported until h4: OUT from outside a hole goes to the new hole's R point
+    """(Not yet supported until wave 7: OUT from outside a hole goes to the new hole's R point
     along its axis, tests/test_last_forms_wave7.py.)"""
     program = tmp_path / "m.apt"
     program.write_text(PROGRAM.replace("GOTO/2,1,9", f"{line}\nGOTO/2,1,9"))

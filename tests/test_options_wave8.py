@@ -1,4 +1,4 @@
-"""Wave 8 (h5): option 80, the pallet height in the clearance (slide-limit) test (001
+"""Wave 8: option 80, the pallet height in the clearance (slide-limit) test (001
 L25356-25366; MACH40 sets 20.25, L27948; TSTLIM L38955-39010); option 222, read as THREDO's
 M (001 L26709-26718, L15985-15988); and a cycle the positioning control lacks, drilled by
 positioning moves (CYCLGP, RAPIDP: 001 L30095-30204, L35274-35313). Decisions in
@@ -158,7 +158,7 @@ def test_without_z_on_tape_the_missing_cycle_is_bad_input() -> None:
 
 
 def test_forms_with_a_dwell_or_spindle_codes_are_built_by_moves() -> None:
-    # were NotYetSupported; wave 9 (h7) builds them: tests/test_cycles_wave9.py
+    # were NotYetSupported; wave 9 builds them: tests/test_cycles_wave9.py
     machine = overlay("mach24", '[tableg]\n82 = "absent"\n85 = "absent"\n[optab]\n130 = 1.0\n')
     post(["FROM/0,0,5", "CYCLE/TAP,DEPTH,0.5,IPM,6,CLEAR,0.1", "GOTO/4,4,0"], machine)
     drilled = post(

@@ -56,7 +56,7 @@ def test_plan_on_a_contouring_machine_is_ignored_and_said_so(tmp_path: Path) -> 
 
 
 def test_plan_on_a_positioning_machine_is_planned_before_the_run() -> None:
-    """(Not yet supported until h4 built GEPLAD, core/plan.py, tests/test_geplad.py: the
+    """(Not yet supported until wave 7 built GEPLAD, core/plan.py, tests/test_geplad.py: the
     run meets a PLAN the pre-pass did not take, and says it is ignored there.)"""
     request = parse_machin(machin("GECENT", 24, "PLAN"))
     assert request is not None

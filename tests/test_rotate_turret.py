@@ -4,7 +4,7 @@ ROTATE (RTATGB) sends ROTATE/TURRET to ROTDRF on a drafting machine and to ROTUR
 otherwise (001 L36055-36095). ROTUR turns a positioning machine's spindle turret (overlay
 GEPOS, L36345-36382): on a contouring machine the statement is bad input naming why (its
 turret is the lathe's TURRET statement, option 96, L25532). On the machines that have the
-routines they are built (h4): tests/test_last_forms_wave7.py.
+routines they are built (issue 22 wave 7): tests/test_last_forms_wave7.py.
 """
 
 from __future__ import annotations
@@ -41,13 +41,13 @@ def test_rotate_turret_on_a_multiaxis_machine_is_bad_input(tmp_path: Path) -> No
 
 @pytest.mark.parametrize("build", [lambda: positioning(0.0), positioning_table])
 def test_rotate_turret_on_a_positioning_machine_is_rotur(build) -> None:  # type: ignore[no-untyped-def]
-    """(Not yet supported until h4 built ROTUR: tests/test_last_forms_wave7.py.)"""
+    """(Not yet supported until issue 22 wave 7 built ROTUR: tests/test_last_forms_wave7.py.)"""
     result = post(["FROM/0,0,0", "ROTATE/TURRET,1"], build())
     assert any(b.cells[13] == 1 for b in result.blocks)
 
 
 def test_rotate_turret_on_a_drafting_machine_is_rotdrf() -> None:
-    """(Not yet supported until h4 built ROTDRF: D3, tests/test_last_forms_wave7.py.)"""
+    """(Not yet supported until wave 7 built ROTDRF: D3, tests/test_last_forms_wave7.py.)"""
     result = post(["FROM/0,0,0", "DRAFT/ON", "ROTATE/TURRET,1"], plotter())
     assert any(b.cells[16] == 3 for b in result.blocks)
 

@@ -173,7 +173,7 @@ def test_saddle_errors_name_what_is_wrong() -> None:
 
 
 def test_a_saddle_move_under_sfm_goes_out_at_the_speed_in_force() -> None:
-    """SADSFM (001 L36474-36478): not yet supported until h4 (tests/test_last_forms_wave7.py):
+    """SADSFM (001 L36474-36478): not yet supported until wave 7 (tests/test_last_forms_wave7.py):
     the saddle changes no SFM radius, so SFMO leaves the speed as it is."""
     program = ["FROM/1,0,0", "SPINDL/100,SFM", "SELECT/HED,SADDLE,1,5,IPM"]
     assert tape(program, lathe_with_saddle())[-1] == "N003G04F005R+001"

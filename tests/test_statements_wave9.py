@@ -1,10 +1,10 @@
-"""The last not-yet-supported statement and control forms (issue 22, h9): the 7500's mixed
+"""The last not-yet-supported statement and control forms (issue 22 wave 9): the 7500's mixed
 control with options 140 and 86 < 0, GOHOME of ROTATE's head and table (options 187-190),
 LOAD/TOOL without a transform class, SELECT/HED's rapid gear shifts (TABLEM 142-153),
 FEDRAT's feed range dwell by the MACFUN (option 93 < 0), spindle off by S0 without an S
 register, magic three out of its range (EIACOM), inverse time for a code past the chart
 (option 10 < 0) and A/D testing (option 55) with F as the feed itself, on multiaxis and
-multihead machines. The readings are in docs/decisions.md ("h9")."""
+multihead machines. The readings are in docs/decisions.md ("issue 22 wave 9")."""
 
 from __future__ import annotations
 

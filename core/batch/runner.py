@@ -203,9 +203,9 @@ def _on_dask(jobs: list[Job], scheduler: str, timeout: float | None) -> Iterator
     """The jobs on a Dask cluster: each ships its CL file's bytes and gets its outputs back,
     so the workers need gecent and the machine packs installed, not this file system. Small
     jobs go several to a task (a task costs the scheduler more than a small post), and a
-    bounded number of tasks is in flight, so the CL files are not all held at once. A task
-    whose worker died runs again one job to a task, so the job that kills its worker is
-    named ``crashed`` and the others are posted."""
+    bounded number of tasks is in flight, so the CL files are not all held at once. The jobs
+    of a task whose worker died run again one by one at the end, so the job that kills its
+    worker is named ``crashed`` and the others are posted."""
     try:
         distributed: Any = import_module("distributed")
     except ImportError:
@@ -233,19 +233,23 @@ def _on_dask(jobs: list[Job], scheduler: str, timeout: float | None) -> Iterator
 
         for chunk in _take(queue, 2 * workers):
             submit(chunk)
+        alone: list[Job] = []  # jobs whose task died: each runs again by itself, at the end
         for future in completed:
             chunk = in_flight.pop(future.key)
             try:
                 yield from future.result()
-            except Exception as exc:  # KilledWorker: a job took its workers down
-                if len(chunk) > 1:
-                    for job in chunk:
-                        submit([job])
-                else:
-                    yield Outcome(chunk[0].number, "crashed", EXIT_INTERNAL, f"{CRASHED} ({exc})")
+            except Exception:  # KilledWorker: a job took its workers down
+                alone.extend(chunk)
             future.release()
             for chunk in _take(queue, 1):
                 submit(chunk)
+        # one at a time, so a job that kills its worker takes no other job's task with it
+        # (Dask counts a worker's death against every task it held)
+        for job in sorted(alone, key=lambda job: job.number):
+            try:
+                yield from client.submit(run_jobs, [job], timeout, pure=False).result()
+            except Exception as exc:
+                yield Outcome(job.number, "crashed", EXIT_INTERNAL, f"{CRASHED} ({exc})")
 
 
 def _chunks(jobs: list[Job], size: int) -> Iterator[list[Job]]:

@@ -116,7 +116,7 @@ def acceleration_test(output: Finisher) -> AccelerationTest | None:
         return None
     # the manual's own A/D was "not currently tested, therefore the standard value must be
     # used" (001 L25094-25108); gecent builds §4.3's analysis for the three slides of one
-    # contouring head and refuses the rest (docs/decisions.md, h9)
+    # contouring head and refuses the rest (docs/decisions.md, issue 22 wave 9)
     for refused, why in (
         (state.head != 0, AD_MULTIHEAD),
         (machine.multiaxis, AD_MULTIAXIS),

@@ -146,7 +146,7 @@ class FeedCommand:
         past the largest code the form's chart lists (G23 and G26 under -1 .. -3), the
         largest's: the command is 1 / minutes whatever the code (D = 1), so the row gives
         only the F format and limits, and the longest moves' row fits a longer one best
-        (docs/decisions.md, h9)."""
+        (docs/decisions.md, issue 22 wave 9)."""
         start = _CLASS_ORDER.index(location)
         for candidate in _CLASS_ORDER[start:]:
             row = INVERSE_TIME.get((int(self.form), candidate))

@@ -294,7 +294,7 @@ def _positioning_control_kinds(machine: MachineDefinition) -> Iterator[Problem]:
     control (L26636-26649): a positioning move then ends where a contour goes on from,
     so its Z cannot be left to the operator (option 130 = 0, L25932-25941); the 7500
     tells the two ways apart by the block's G code, so it needs the positioning G
-    TABLEG(1) and the linear one TABLEG(2) (docs/decisions.md, h6)."""
+    TABLEG(1) and the linear one TABLEG(2) (docs/decisions.md, issue 22 wave 8)."""
     control, cuts = _number(machine, 1), machine.number_option(213)  # (a number: the schema)
     if cuts not in (0, 1):
         yield "optab", 213, f"contouring machine with a positioning control is 0 or 1; found {cuts}"

@@ -101,7 +101,7 @@ def parse_cycle(
         kind = STAND_INS[kind]
     if kind not in CYCLE_TYPES or "," in kind:
         # CYCLGP's minor words are the manual's cycles (001 L30106-30130); any other is
-        # not a GECENT III cycle (docs/decisions.md, h4)
+        # not a GECENT III cycle (docs/decisions.md, issue 22 wave 7)
         raise InputError(
             f"CYCLE/{kind} is not a GECENT III cycle; the cycles are "
             f"{', '.join(k for k in CYCLE_TYPES if ',' not in k)}, INHIBT and OFF",

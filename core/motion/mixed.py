@@ -2,7 +2,7 @@
 (absolute) and contouring (incremental) capability" (manual §5.6.5, option 1, 001
 L24352-24356; option 132 = 8, "positioning machine with contouring option (7500 series)",
 L25958). The manual names the control but never says which motion goes out which way;
-gecent's reading (docs/decisions.md, "h6"):
+gecent's reading (docs/decisions.md, "issue 22 wave 8"):
 
 * a motion at rapid traverse (RAPID, or a modal rapid in force) and every hole of a canned
   cycle go out as the positioning control makes them (GEPOS's POSMOV and CYCLGP,
@@ -55,7 +55,7 @@ def enter_way(state: PostState, positioning: PositioningMotion, way: bool) -> No
     the positioning way's Z is the tip plus the shift (the spindle nose above the tip, the
     inversion's datum), the contouring way's the tip of the tool now in the spindle, so
     a tool changed under positioning leaves the next departure counted from that tool's
-    tip (docs/decisions.md, h9)."""
+    tip (docs/decisions.md, issue 22 wave 9)."""
     if way == positioning.in_own_frame:
         return
     positioning.in_own_frame = way

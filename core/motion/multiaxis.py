@@ -477,7 +477,7 @@ class MultiaxisMotion:
             for cell, degrees in zip(self.cells, turned, strict=True):
                 radius = machine.number_option(128 if cell == 6 else 112)
                 longest = max(longest, radians(degrees) * radius)
-        # options 112, 128 = 0: F is degrees per minute, as a G94 control reads it (h8)
+        # options 112, 128 = 0: F is degrees per minute, as a G94 control reads it (issue 22 wave 9)
         return longest if longest > 0.0 else max(turned, default=0.0)
 
     def _pole(self, record: Motion, start: tuple[float, ...], before: list[int]) -> None:

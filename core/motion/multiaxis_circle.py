@@ -27,7 +27,7 @@ passes them, and this module outputs the finished arc through the transform clas
   band that covers it (W24: TABLEG(21) CLW, (31) CCLW; core/motion/gcode.py's
   :func:`circle_code`).
 * D and E (DBFSEG 16, 17), the rotary "supplementary constants", the "equivalent of rotary
-  axes 'arc center offsets'" (001 L1830-1842; open question 14, docs/decisions.md h4): as
+  axes 'arc center offsets'" (001 L1830-1842; open question 14, docs/decisions.md wave 7): as
   a circle's interpolator turns its centre offsets into the slides' rates, it turns a
   constant into a rotary axis's rate in proportion to the angle, so the constant is the
   rotary axis's "radius": the block's rotary departure over its sweep in radians

@@ -57,7 +57,7 @@ def rotate(motion: MultiaxisMotion, statement: Statement) -> None:
         tracked = True  # "proceeds as if the option = 1" (001 L24754-24757)
     if motion.modern_absolute:
         # an angle word under G90 (option 251 = 1) is where the table is: an untracked
-        # index would be turned back by the next move's angle (docs/decisions.md, h8)
+        # index would be turned back by the next move's angle (docs/decisions.md, issue 22 wave 9)
         tracked = True
     clw_increases = machine.number_option(117) >= 0
     move = rotary_move(

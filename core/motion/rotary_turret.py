@@ -2,7 +2,7 @@
 L36055-36095): ROTUR turns a positioning machine's spindle turret (GEPOS, L36345-36382) and
 ROTDRF indexes a drafting machine's turret (GEDRAF, L36097-36124). On a contouring machine
 the statement is bad input (core/motion/rotary_devices.py ``rotate_turret``). The forms and
-codes the manual leaves open are decided in docs/decisions.md ("h4").
+codes the manual leaves open are decided in docs/decisions.md ("issue 22 wave 7").
 """
 
 from __future__ import annotations
@@ -61,7 +61,7 @@ def index_drafting_turret(
     down (001 L36097-36124). The drafting machine's codes go in its D register (DRAFT,
     L30529-30578), whose pen codes are 1, 2, 4 and 5: the index is D3, the one they leave
     free. ROTATE/TURRET indexes to the next station; ROTATE/TURRET, n names the station
-    in the T register (docs/decisions.md, h4)."""
+    in the T register (docs/decisions.md, issue 22 wave 7)."""
     words = [a.name for a in statement.args[1:] if isinstance(a, Word)]
     numbers = statement.numbers()
     where = statement.where
@@ -100,7 +100,7 @@ def turn_spindle_turret(statement: Statement, tool: SpindleTurret) -> None:
     a ROTATE/TURET statement", L25424) LENGTH is the tool length POSMOV adds to Z (option
     86 < 0, L34956-34961) and OFSETL's M code (option 96 = -K) goes out, after the turn's
     (one M register: a block each); with another option 86 they are said to be ignored
-    (docs/decisions.md, h4)."""
+    (docs/decisions.md, issue 22 wave 7)."""
     where = statement.where
     station: int | None = None
     values: dict[str, float] = {}

@@ -156,7 +156,7 @@ def _rotary_devices_home(
     """The rotary devices GOHOME turns on a machine without a transform class: ROTATE's
     head (option 187) and table (option 188), each whose home the machine file sets (a
     home of 0 is the reading they start at). Options 189 and 190 home the third rotary
-    and the secondary axis, which only a transform class has (docs/decisions.md, h9;
+    and the secondary axis, which only a transform class has (docs/decisions.md, issue 22 wave 9;
     001 L26478-26500)."""
     machine = run.machine
     for number, value in zip(HOME_ROTARY[2:], homes[2:], strict=False):

@@ -181,7 +181,7 @@ def saddle(run: Post, statement: Statement) -> None:
     # under SFM, SADDLE calls SFMO (SADSFM, 001 L36474-36478, L36505): its radius is a CL
     # coordinate or a fixed one (SFMRAD), which a saddle move changes neither of, so SFMO's
     # sequence ends at once (a constant radius, L14230-14549) and the move goes out at the
-    # speed in force (docs/decisions.md, h4)
+    # speed in force (docs/decisions.md, issue 22 wave 7)
     step = machine.number_option(14)
     steps = to_steps(run.units.length(numbers[0]), step)
     if steps == 0:
