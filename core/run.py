@@ -377,8 +377,10 @@ class Run(CycleHoles, Elements):
         self.result.cut_minutes = self.output.cut_minutes
         self.result.dwell_minutes = self.output.dwell_minutes
         reels = self.sinks.reels
-        for note in reels.notes if reels is not None else ():
-            self.warn(note)  # a reel broken at option 134's maximum (core/output/reels.py)
+        for text, number in reels.notes if reels is not None else ():
+            # a reel broken at option 134's maximum (core/output/reels.py), at CL record n
+            where = SourcePosition(self._file, record=number) if number is not None else None
+            self.warn(Diagnostic(text, where))
         if self.output.slide_limits.exceeded and self.machine.number_option(110) == 2:
             self.result.punch_suppressed = True
             self.warn(Diagnostic("SLIDE LIMITS EXCEEDED: NO PUNCHED OUTPUT (OPTION 110 = 2)"))

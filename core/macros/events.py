@@ -3,7 +3,8 @@
 The run installs these as its hooks only when a macro engine runs (a machine with macros):
 without macros the post's path is untouched. Each hook is a bound method of
 :class:`EventHooks`, or a statement handler taking the run (core/macros/statement_hooks.py),
-so a snapshot of the run for a look-ahead carries hooks that act on the snapshot alone.
+so a snapshot of the run for a look-ahead carries hooks that act on the snapshot alone. The
+register and tape macros' work is in core/macros/block_events.py.
 
 =====================  ======================================================
 kind                   fires around
@@ -22,13 +23,12 @@ operation event        OPTYPE, after its look-ahead (§5.9)
 
 from __future__ import annotations
 
-import re
 from typing import TYPE_CHECKING, Any
 
-from gecent.core.absent import ABSENT
 from gecent.core.cl.records import Motion, MotionSubtype
 from gecent.core.errors import Diagnostic
 from gecent.core.families import HookPoint
+from gecent.core.macros.block_events import register_event, tape_event
 from gecent.core.macros.context import Frame
 from gecent.core.macros.cycle_switches import cycle_switches, feed_alone
 from gecent.core.macros.diagnostics import WARNING, comment_number, deliver
@@ -40,13 +40,10 @@ from gecent.core.macros.params import (
     CycleParams,
     DiagnosticParams,
     MotionParams,
-    RegisterParams,
-    TapeParams,
 )
 from gecent.core.macros.searches import next_motion
 from gecent.core.motion.positioning import refuse_cycle_by_moves
-from gecent.core.output.block import TEXT_CODES, Block, Code
-from gecent.core.output.tape import tape_line
+from gecent.core.output.block import Block
 
 if TYPE_CHECKING:
     from gecent.core.macros.engine import MacroEngine
@@ -57,9 +54,6 @@ if TYPE_CHECKING:
 
 _SUBCLASS = {MotionSubtype.FROM: 3.0, MotionSubtype.GODLTA: 5.0, MotionSubtype.GOTO: 5.0,
              MotionSubtype.CONTINUATION: 6.0}  # fmt: skip
-_SEQUENCE = re.compile(r"(/?\s*N\d+)\s*(.*)\Z", re.DOTALL)
-LAST_REGISTER = 30
-TAPE_RESTARTS = 10_000  # a tape macro left in restart mode would loop for ever (§5.11)
 
 
 class EventHooks:
@@ -380,83 +374,12 @@ class EventHooks:
                 raise self._failure(Kind.DIAGNOSTIC, error, run.current_record) from None
 
     def tape(self, block: Block) -> None:
-        """§5.11: each punched block goes through the tape macro before tape and listing."""
-        engine = self.engine
-        run = self.run
-        line = tape_line(block)
-        if line is None:
-            run.sinks.emit(block)
-            return
-        params = TapeParams()
-        _tape_block(params, line, 1.0)
-
-        def emit(frame: Frame) -> None:
-            text = str(params.block)
-            if text:
-                run.sinks.emit(_extra_block(block, text))
-            _tape_block(params, "", params.flag)
-
-        local: dict[str, Any] = {}  # kept across restarts (§5.11)
-        for _ in range(TAPE_RESTARTS):
-            frame = engine.single(Kind.TAPE, params, run.current_record, emit, local)
-            if frame is None:
-                run.sinks.emit(block)
-                return
-            flag = params.flag
-            if flag == 0:
-                return
-            text = str(params.block)
-            if flag == 1:
-                if text == line:
-                    run.sinks.emit(block)
-                elif text:
-                    _retext(block, text)
-                    run.sinks.emit(block)
-                return
-            if text:  # restart mode: out it goes, and the macro begins again
-                run.sinks.emit(_extra_block(block, text))
-            _tape_block(params, "", flag)
-        macro = engine.table.event(Kind.TAPE, Phase.EVENT)
-        raise MacroFailure(
-            f"macro {macro.key if macro else 'tape'}: restarted {TAPE_RESTARTS} times "
-            "($P1 never set back to 0 or 1, §5.11)",
-            run.current_record.where if run.current_record is not None else None,
-        )
+        """§5.11: each punched block goes through the tape macro (core/macros/block_events.py)."""
+        tape_event(self.engine, self.run, block)
 
     def register(self, block: Block, words: list[RegisterWord]) -> list[RegisterWord]:
-        """§5.10: each register of a block, before it is placed in the block."""
-        engine = self.engine
-        placed: list[tuple[float, int, RegisterWord]] = []
-        order = 0
-        for word in words:
-            location, letter, _printed, punched = word
-            text = letter + punched
-            matching = engine.sv.get("REGMATCH")  # the macro may set it as it goes
-            if matching and not _register_matches(matching, location, text, block.code):
-                placed.append((location, order, word))
-                order += 1
-                continue
-            params = RegisterParams()
-            value = block.cells[location]
-            for number, item in ((1, 1.0), (2, text), (3, location),
-                                 (4, None if value is ABSENT else float(value)),
-                                 (5, block.code)):  # fmt: skip
-                params.set(number, item)
-
-            def put(frame: Frame, params: RegisterParams = params) -> None:
-                nonlocal order
-                params.changed.clear()
-                placed.append((_slot(params.index), order, _word(params)))
-                order += 1
-
-            frame = engine.single(Kind.REGISTER, params, self.run.current_record, put)
-            if frame is None:
-                placed.append((location, order, word))
-            elif params.flag != 0 and (frame.outputs == 0 or params.changed):
-                placed.append((_slot(params.index), order, _word(params)))
-            order += 1
-        placed.sort(key=lambda item: (item[0], item[1]))
-        return [word for _, _, word in placed]
+        """§5.10: each register of a block, before it is placed (core/macros/block_events.py)."""
+        return register_event(self.engine, self.run, block, words)
 
 
 def _cycle_goes(params: Any) -> bool:
@@ -466,58 +389,6 @@ def _cycle_goes(params: Any) -> bool:
 def _cycle_output(params: Any) -> bool:
     """The cycle shutdown macro follows a cycle block, not holes made by moves (§5.6)."""
     return bool(params.control in (1, 2))
-
-
-def _tape_block(params: TapeParams, line: str, flag: float) -> None:
-    params.set(1, flag)
-    params.set(2, 1.0)
-    params.set(3, line)
-    found = _SEQUENCE.match(line)
-    params.set(4, found.group(1) if found else "")
-    params.set(5, found.group(2) if found else line)
-    params.changed.clear()
-
-
-def _extra_block(like: Block, text: str) -> Block:
-    """A block a tape macro adds: punched as written, blanks kept."""
-    block = Block(Code.INSERT, like.record, text=text)
-    block.keep_blanks = True
-    return block
-
-
-def _retext(block: Block, text: str) -> None:
-    if block.code in TEXT_CODES:
-        block.text = text
-        block.keep_blanks = True
-    else:
-        block.punch = text
-
-
-def _register_matches(matching: tuple[Any, ...], location: int, text: str, code: Code) -> bool:
-    for item in matching:
-        if isinstance(item, Code):
-            if item is code:
-                return True
-        elif isinstance(item, str):
-            if re.match(item, text):
-                return True
-        elif item == location:
-            return True
-    return False
-
-
-def _slot(index: Any) -> float:
-    number = float(index)
-    if number < 1:
-        return -1.0  # prefixed to the block
-    if number > LAST_REGISTER:
-        return LAST_REGISTER + 1.0  # appended
-    return number
-
-
-def _word(params: RegisterParams) -> RegisterWord:
-    text = str(params.text)
-    return (int(_slot(params.index)), "", text, text)
 
 
 # the cycle types of $P4 (§5.6) for gecent's cycle words, without and with a dwell

@@ -57,8 +57,10 @@ def post_multihead(
         # (the machine as the program left it: MACHIN may have changed options)
         merge = MergePass(first.runs[0].machine, first.tapes, sinks, warn)
         merge.run()
-        for note in sinks.reels.notes if sinks.reels is not None else ():
-            warn(note)  # the merged tape broken at option 134's maximum
+        for text, _ in sinks.reels.notes if sinks.reels is not None else ():
+            # the merged tape broken at option 134's maximum (its blocks have left their
+            # CL records behind in the merge)
+            warn(Diagnostic(text))
         # option 110 = +2 or 173 = 0 in head 1's run: the listing without the tape
         ending = Ending(True, punch_suppressed=head_result.punch_suppressed)
     except FatalError as error:

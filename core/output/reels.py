@@ -20,7 +20,6 @@ Either option at 0 ignores its part of the sequence: 135 = 0, BREAK never breaks
 
 from __future__ import annotations
 
-from gecent.core.errors import Diagnostic
 from gecent.core.machine.definition import MachineDefinition
 from gecent.core.output.block import Block, Code
 from gecent.core.output.marks import leader_block, stand_in
@@ -54,7 +53,8 @@ class Reels:
         self.frames = 0  # on this reel
         self.holds_blocks = False  # a block of the program is on this reel
         self.ending = False  # a break's blocks are passing: the old reel's end, not its length
-        self.notes: list[Diagnostic] = []  # the automatic breaks, for the run's warnings
+        # the automatic breaks, for the run's warnings: the text and the CL record it came at
+        self.notes: list[tuple[str, int | None]] = []
 
     @property
     def feet(self) -> float:
@@ -87,11 +87,11 @@ class Reels:
         reel when its heading passes (:meth:`new_reel`)."""
         if automatic:
             self.notes.append(
-                Diagnostic(
+                (
                     f"TAPE REEL {self.reel} WOULD PASS {self.maximum_feet:g} FEET (OPTION 134) "
                     f"AND NO BREAK STATEMENT BROKE IT: THE TAPE IS BROKEN AT {self.feet:.1f} "
                     f"FEET, REEL {self.reel + 1} FOLLOWS",
-                    None,
+                    record,
                 )
             )
         self.ending = True
