@@ -646,3 +646,18 @@ def test_a_job_that_kills_its_dask_worker_is_named_and_the_others_post(tmp_path:
         )
     assert result.exit_code == 1, result.output
     assert statuses(tmp_path / "s.json") == ["posted"] * 4 + ["crashed"] + ["posted"] * 4
+
+
+def test_an_output_the_settings_no_longer_ask_for_is_removed(tmp_path: Path) -> None:
+    """A listing the last batch wrote and this one does not (--no-listing) goes, unless it
+    was changed since: then it is someone else's file."""
+    programs(tmp_path / "in", 2)
+    out = tmp_path / "o"
+    common = [str(tmp_path / "in"), "--machine", "mach23", "--out", str(out)]
+    assert batch(*common).exit_code == 0
+    assert (out / "part0.apt.lis").exists() and (out / "part1.apt.lis").exists()
+    (out / "part1.apt.lis").write_text("annotated by the operator\n")
+    assert batch(*common, "--no-listing").exit_code == 0
+    assert not (out / "part0.apt.lis").exists()
+    assert (out / "part1.apt.lis").read_text() == "annotated by the operator\n"
+    assert (out / "part0.apt.tape").exists()

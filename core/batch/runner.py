@@ -83,6 +83,7 @@ def run_batch(
             if outcome.ok:
                 written = _write_outputs(job, outcome)
                 if state is not None and outcome.ok:
+                    state.remove_left_over(job, written)
                     state.record(job, keys[job.number], outcome, written)
             elif state is not None:
                 state.forget(job)

@@ -152,6 +152,24 @@ class State:
             verify=str(entry.get("verify", "")) if job.verify else "",
         )
 
+    def remove_left_over(self, job: Job, written: dict[str, str]) -> list[str]:
+        """The files this job's last batch wrote that it writes no longer (a listing or
+        punch its settings dropped) are removed, when they are still as the batch wrote
+        them (a file changed since is someone else's now); the paths removed."""
+        entry = self.jobs.get(_entry_key(job))
+        earlier = entry.get("outputs") if isinstance(entry, dict) else None
+        removed = []
+        for path, digest in dict(earlier or {}).items():
+            if path in written:
+                continue
+            try:
+                if file_hash(path) == digest:
+                    os.remove(path)
+                    removed.append(path)
+            except OSError:
+                continue
+        return removed
+
     def record(self, job: Job, key: str | None, outcome: Outcome, written: dict[str, str]) -> None:
         """A job posted (and written): remember what it depended on and what it wrote."""
         if key is None:
