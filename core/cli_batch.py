@@ -8,7 +8,10 @@ import signal
 import sys
 import threading
 import time
+from collections.abc import Callable
+from functools import wraps
 from pathlib import Path
+from typing import Any
 
 import click
 from gecent.core.batch.jobs import (
@@ -29,6 +32,26 @@ from gecent.core.motion.guard import DEFAULT_MAX_SEGMENTS
 
 EXIT_SOME_FAILED = 1
 EXIT_INTERRUPTED = 130
+
+
+def _interruptible(command: Callable[..., None]) -> Callable[..., None]:
+    """Ctrl-C, and SIGTERM (a service stopping) as Ctrl-C, stop the batch with exit 130: the
+    queued jobs are dropped, the workers stopped and what finished is recorded."""
+
+    def stop(signum: int, frame: object) -> None:
+        raise KeyboardInterrupt
+
+    @wraps(command)
+    def run(*args: Any, **kwargs: Any) -> None:
+        if threading.current_thread() is threading.main_thread():
+            signal.signal(signal.SIGTERM, stop)
+        try:
+            command(*args, **kwargs)
+        except KeyboardInterrupt:
+            click.echo("gecent batch: interrupted; the jobs that finished are recorded", err=True)
+            sys.exit(EXIT_INTERRUPTED)
+
+    return run
 
 
 @click.command("batch")
@@ -109,6 +132,7 @@ EXIT_INTERRUPTED = 130
 @click.option("--progress/--no-progress", default=None, help="Default: on a terminal.")
 @click.option("-q", "--quiet", is_flag=True, help="No table; only the totals line.")
 @reporting_errors
+@_interruptible
 def batch_command(
     sources: tuple[str, ...],
     manifest: str | None,
@@ -138,38 +162,6 @@ def batch_command(
     unchanged since the last batch into the same outputs are skipped (--force posts them).
     Exit 0 when every job posted (or was skipped), 1 when any failed, 2 for bad batch
     input."""
-    _stop_on_sigterm()
-    try:
-        _batch(**locals())
-    except KeyboardInterrupt:
-        click.echo("gecent batch: interrupted", err=True)
-        sys.exit(EXIT_INTERRUPTED)
-
-
-def _batch(
-    sources: tuple[str, ...],
-    manifest: str | None,
-    machines: tuple[str, ...],
-    out: str,
-    suffix: str,
-    listing: bool | None,
-    punch: str | None,
-    dialect: str | None,
-    optab: str | None,
-    macros: tuple[str, ...],
-    max_segments: int,
-    workers: int | None,
-    scheduler: str | None,
-    verify: bool,
-    force: bool,
-    dry_run: bool,
-    timeout: float | None,
-    state: str | None,
-    json_path: str | None,
-    csv_path: str | None,
-    progress: bool | None,
-    quiet: bool,
-) -> None:
     if bool(sources) == bool(manifest):
         raise InputError("name CL files or folders, or give --manifest (not both)")
     plugins = installed_plugins()  # (its warnings, once)
@@ -227,9 +219,6 @@ def _batch(
     started = time.perf_counter()
     try:
         result = run_batch(jobs, settings, advance)
-    except KeyboardInterrupt:
-        click.echo("gecent batch: interrupted; the jobs finished are recorded", err=True)
-        sys.exit(EXIT_INTERRUPTED)
     finally:
         if bar is not None:
             bar.close()
@@ -270,14 +259,3 @@ def _write(path: str, text: str) -> str | None:
     except OSError as exc:
         return f"cannot write the summary {path}: {exc.strerror or exc}"
     return None
-
-
-def _stop_on_sigterm() -> None:
-    """SIGTERM (a service stopping) stops the batch as Ctrl-C does: the queued jobs are
-    dropped, the workers stopped and what finished is recorded."""
-
-    def stop(signum: int, frame: object) -> None:
-        raise KeyboardInterrupt
-
-    if threading.current_thread() is threading.main_thread():
-        signal.signal(signal.SIGTERM, stop)

@@ -282,7 +282,8 @@ def plot_five_axis(
     from gecent.core.plot import is_tape
     from gecent.core.plot5 import cl_path, render_five_axis, tape_path
     from gecent.core.verify.check import cl_as_posted
-    from gecent.core.verify.fiveaxis import FiveAxisKinematics, cl_poses
+    from gecent.core.verify.fiveaxis import FiveAxisKinematics
+    from gecent.core.verify.fiveaxis_cl import cl_poses
     from gecent.core.verify.rs274 import interpret
 
     chain = machine.kinematics

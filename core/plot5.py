@@ -14,7 +14,8 @@ from typing import Any
 
 from gecent.core.errors import InputError
 from gecent.core.output.files import write_atomically
-from gecent.core.verify.fiveaxis import FiveAxisKinematics, Pose
+from gecent.core.verify.fiveaxis import FiveAxisKinematics
+from gecent.core.verify.fiveaxis_cl import Pose
 from gecent.core.verify.rs274 import TapeMove
 
 Point = tuple[float, float, float]

@@ -67,6 +67,7 @@ from gecent.core.motion.positioning import PositioningMotion
 from gecent.core.motion.rotary import RotaryElement
 from gecent.core.motion.thread import ThreadElement
 from gecent.core.motion.tool_axis import three_axis_motion
+from gecent.core.motion.unmade import refuse_on_multiaxis, refuse_on_positioning
 from gecent.core.output.block import Block, Code
 from gecent.core.output.element import OutputElement
 from gecent.core.output.format import FormatOverflow
@@ -421,14 +422,13 @@ class Run(CycleHoles, Elements):
         if modes.stopped and record.subtype is not MotionSubtype.FROM:
             restat(self, record.number)
         if multiaxis and record.subtype is not MotionSubtype.FROM:
-            self._multiaxis_special(record, positioning)
+            refuse_on_multiaxis(self.state, record, positioning)
         if self.safety_motions:
             safety_motion(self, record)  # TSTFLG's SAFETO/SAFETX
         if mixed:
             positioning = self._mixed_way(record)
         if positioning:
-            if self.state.threading.armed:
-                raise InputError(THREAD_POSITIONING, record.where)
+            refuse_on_positioning(self.state, record)
             self.positioning.record(record, self.cycle)
             return
         if self.cycle is not None and record.subtype is not MotionSubtype.FROM:
@@ -478,15 +478,6 @@ class Run(CycleHoles, Elements):
 
         self.circle.finisher = MultiaxisCircle(self.multiaxis, self.circle).finish
 
-    def _multiaxis_special(self, record: Motion, positioning: bool) -> None:
-        """What a multiaxis machine's motion cannot do is bad input naming why."""
-        if positioning:
-            raise InputError(MULTIAXIS_POSITIONING, record.where)
-        if self.state.threading.armed:
-            raise InputError(THREAD_MULTIAXIS, record.where)
-        if self.state.sfm.active:
-            raise InputError(SFM_MULTIAXIS, record.where)
-
 
 def _units(run: Post, statement: Statement) -> None:
     run.units.set_units(statement)
@@ -501,30 +492,6 @@ def _names_gecent(statement: Statement) -> bool:
 CURVE_WORDS = frozenset({"NURBS", "KNOT", "CNTRL", "SPLINE", "BSPLINE"})
 AFTER_END = "END OR RESET HAS NOT BEEN FOLLOWED BY A FROM POINT."  # comment 47 (L34080)
 UNKNOWN_WORD = "IS NOT A GECENT III POSTPROCESSOR WORD; STATEMENT DISREGARDED"
-# combinations the manual's overlays do not make (docs/decisions.md, issue 22 wave 7): the threading
-# routines are the lathe's THREAD/THREDO (GELATH) and the mill's THREDM (GEMILL), SFMO the
-# lathe's (001 L38323-38380, L37415-37420); GEMAXS drives a contouring control (L443-444;
-# the multiaxis sample has option 1 = 0, L550-566)
-THREAD_POSITIONING = (
-    "THREAD on a positioning machine: threading is the lathe's THREAD/THREDO (GELATH) and "
-    "the mill's THREDM (GEMILL); the positioning overlay GEPOS has no thread (001 "
-    "L38323-38380)"
-)
-THREAD_MULTIAXIS = (
-    "THREAD on a multiaxis machine: threading is the lathe's THREAD/THREDO (GELATH) and the "
-    "mill's THREDM (GEMILL), whose lead is along the machine's slides; the multiaxis "
-    "overlay GEMAXS (option 116) has no thread (001 L38323-38380, L443-444)"
-)
-SFM_MULTIAXIS = (
-    "SFM on a multiaxis machine: SFMO (GELATH) keeps the surface speed by the radius of a "
-    "CL coordinate about the spindle's centre line; under GEMAXS (option 116) the transform "
-    "turns the part, so that radius is not the cut's (001 L37415-37420, L443-444)"
-)
-MULTIAXIS_POSITIONING = (
-    "multiaxis motion on a positioning machine: GEMAXS's transforms (option 116) make a "
-    "contouring control's moves (the manual's multiaxis machine has option 1 = 0, 001 "
-    "L443-444, L550-566); a positioning machine turns its table with ROTATE/TABLE (ROTABA)"
-)
 PRINTED_ONLY = "PRINTED OUTPUT ONLY: NO TAPE IS PUNCHED (OPTION 173 = 0)"
 
 _TYPE_NAMES = {"MOTION": "5000", "CIRCLE": "3000", "ARELEM": "6000", "MULTIAX": "9000"}

@@ -14,27 +14,14 @@ from gecent.core.output.block import Block, Code
 from gecent.core.output.tape import tape_line
 from gecent.core.plugins import PluginSet
 
-PROGRAM = """PARTNO TURRET
-MACHIN/GECENT,51,OPTAB,106,8,OPTAB,139,0
-COMBIN/2
-SELECT/HEAD,1
-FROM/6,4,0
-FEDRAT/10
-TURRET/1,1,2,3
-SELECT/HEAD,2
-FROM/7,5,0
-FEDRAT/8
-TURRET/1,1,4,4
-SELECT/HEAD,1
-OP/3
-TURRET/2,2,2.5,1,NOW
-GOTO/4.5,1.5,0
-SELECT/HEAD,2
-OP/3
-GOTO/6.8,5,0
-GOTO/6.8,4,0
-FINI
-"""
+from .test_multihead_turret import HEADER
+
+# head 1's correction beside head 2's two moves, on one feedrate register (option 139 = 0)
+PROGRAM = (
+    HEADER.format(options=",OPTAB,139,0")
+    + "SELECT/HEAD,1\nOP/3\nTURRET/2,2,2.5,1,NOW\nGOTO/4.5,1.5,0\n"
+    + "SELECT/HEAD,2\nOP/3\nGOTO/6.8,5,0\nGOTO/6.8,4,0\nFINI\n"
+)
 
 
 def _moves(plugins: PluginSet, tmp_path: Path) -> list[Block]:

@@ -11,6 +11,8 @@ from pathlib import Path
 from click.testing import CliRunner
 from gecent.core.cli import main
 
+from .test_multihead_turret import HEADER
+
 SINGLE_HEAD = """PARTNO TURRET
 MACHIN/GECENT,4,OPTAB,106,8,OPTAB,164,2
 FROM/6,0,4
@@ -22,27 +24,13 @@ GOTO/4,0,4
 FINI
 """
 
-TWO_HEADS = """PARTNO TURRET
-MACHIN/GECENT,51,OPTAB,106,8
-COMBIN/2
-SELECT/HEAD,1
-FROM/6,4,0
-FEDRAT/10
-TURRET/1,1,2,3
-SELECT/HEAD,2
-FROM/7,5,0
-FEDRAT/8
-TURRET/1,1,4,4
-SELECT/HEAD,1
-OP/3
-TURRET/2,2,2.5,1,NOW
-GOTO/4.5,1.5,0
-SELECT/HEAD,2
-OP/3
-GOTO/6,3,0
-GOTO/5,2,0
-FINI
-"""
+# head 1's correction beside head 2's moves (the heads as tests/test_multihead_turret.py
+# sets them up)
+TWO_HEADS = (
+    HEADER.format(options="")
+    + "SELECT/HEAD,1\nOP/3\nTURRET/2,2,2.5,1,NOW\nGOTO/4.5,1.5,0\n"
+    + "SELECT/HEAD,2\nOP/3\nGOTO/6,3,0\nGOTO/5,2,0\nFINI\n"
+)
 
 
 def _listing(tmp_path: Path, program: str) -> str:

@@ -96,16 +96,9 @@ class FeedCommand:
         departures times c go in I, J, K."""
         if self.form == 1:
             return None
-        if self.form == 0:
-            command, highest, regfor, decimals = (
-                gdimul * ipm / length,
-                self.maximum,
-                None,
-                self.decimals,
-            )
-        else:
-            regfor, _, highest = self._row(dimension_class)
-            command, decimals = ipm / length, int(regfor) % 10
+        command, highest, regfor, decimals = self._command_limits(
+            ipm, gdimul, length, dimension_class
+        )
         if command <= highest:
             return None
         if self.strictly_below:
@@ -113,6 +106,16 @@ class FeedCommand:
         else:
             constant = ceil(command / highest - 1e-9)  # to the maximum "or below" (L12470-12480)
         return constant, float(half_up(command / constant, decimals)), regfor
+
+    def _command_limits(
+        self, ipm: float, gdimul: float, length: float, dimension_class: int
+    ) -> tuple[float, float, float | None, int]:
+        """A linear block's command, its maximum, its F format and its decimals (the
+        multiplier and option 224 both start from them)."""
+        if self.form == 0:
+            return gdimul * ipm / length, self.maximum, None, self.decimals
+        regfor, _, highest = self._row(dimension_class)
+        return ipm / length, highest, regfor, int(regfor) % 10
 
     def decimal_shift(
         self, ipm: float, gdimul: float, length: float, dimension_class: int
@@ -124,16 +127,9 @@ class FeedCommand:
         feed is unchanged while the command keeps k more significant digits."""
         if self.form == 1:
             return None
-        if self.form == 0:
-            command, highest, regfor, decimals = (
-                gdimul * ipm / length,
-                self.maximum,
-                None,
-                self.decimals,
-            )
-        else:
-            regfor, _, highest = self._row(dimension_class)
-            command, decimals = ipm / length, int(regfor) % 10
+        command, highest, regfor, decimals = self._command_limits(
+            ipm, gdimul, length, dimension_class
+        )
         k = 0
         while command * 10 ** (k + 1) <= highest * (1 + 1e-12) and k < 9:
             k += 1

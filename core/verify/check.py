@@ -17,9 +17,9 @@ from gecent.core.verify.fiveaxis import (
     DEFAULT_AXIS_TOLERANCE,
     FiveAxisKinematics,
     FiveAxisVerification,
-    cl_poses,
     compare_poses,
 )
+from gecent.core.verify.fiveaxis_cl import cl_poses
 from gecent.core.verify.rs274 import Interpretation, interpret, offset_words
 
 DEFAULT_TOLERANCE_MM = 0.001
